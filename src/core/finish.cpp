@@ -1,0 +1,151 @@
+#include "core/finish.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+namespace moa {
+namespace {
+
+// Vertex -> incident alive faces, in compressed rows.
+struct Incidence {
+  std::vector<uint32_t> start, faces;
+  Incidence(std::size_t nv, const std::vector<Tri> &tris, const std::vector<char> &alive) {
+    start.assign(nv + 1, 0);
+    for (std::size_t f = 0; f < tris.size(); ++f)
+      if (alive[f])
+        for (uint32_t v : tris[f]) ++start[v + 1];
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    faces.resize(start.back());
+    std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+    for (std::size_t f = 0; f < tris.size(); ++f)
+      if (alive[f])
+        for (uint32_t v : tris[f]) faces[fill[v]++] = uint32_t(f);
+  }
+};
+
+bool share_other_vertex(const Tri &a, const Tri &b, uint32_t v) {
+  for (uint32_t x : a)
+    if (x != v && (x == b[0] || x == b[1] || x == b[2])) return true;
+  return false;
+}
+
+// Removes, at every vertex whose faces form several fans, all fans but the largest. Removal
+// can split fans elsewhere, so repeat until nothing changes. Returns faces removed.
+std::size_t enforce_single_fans(std::size_t nv, const std::vector<Tri> &tris,
+                                std::vector<char> &alive) {
+  std::size_t removed = 0;
+  for (bool changed = true; changed;) {
+    changed = false;
+    Incidence inc(nv, tris, alive);
+    for (uint32_t v = 0; v < nv; ++v) {
+      uint32_t b = inc.start[v], e = inc.start[v + 1], n = e - b;
+      if (n < 2) continue;
+      std::vector<uint32_t> fan(n);
+      std::iota(fan.begin(), fan.end(), 0u);
+      auto root = [&](uint32_t x) {
+        while (fan[x] != x) x = fan[x] = fan[fan[x]];
+        return x;
+      };
+      for (uint32_t i = 0; i < n; ++i)
+        for (uint32_t j = i + 1; j < n; ++j)
+          if (alive[inc.faces[b + i]] && alive[inc.faces[b + j]] &&
+              share_other_vertex(tris[inc.faces[b + i]], tris[inc.faces[b + j]], v))
+            fan[root(i)] = root(j);
+      std::vector<uint32_t> size(n, 0);
+      for (uint32_t i = 0; i < n; ++i) ++size[root(i)];
+      uint32_t best = 0;
+      for (uint32_t i = 0; i < n; ++i)
+        if (size[root(i)] > size[best] || (size[root(i)] == size[best] && root(i) < best))
+          best = root(i);
+      for (uint32_t i = 0; i < n; ++i)
+        if (root(i) != best && alive[inc.faces[b + i]]) {
+          alive[inc.faces[b + i]] = 0;
+          ++removed;
+          changed = true;
+        }
+    }
+  }
+  return removed;
+}
+
+// Turns every closed component so that its signed volume is positive.
+void orient_outward(const GrowthState &g, std::vector<Tri> &tris, const std::vector<char> &alive) {
+  const std::size_t nf = tris.size();
+  std::vector<uint32_t> comp(nf);
+  std::iota(comp.begin(), comp.end(), 0u);
+  auto root = [&](uint32_t x) {
+    while (comp[x] != x) x = comp[x] = comp[comp[x]];
+    return x;
+  };
+  Incidence inc(g.points.size(), tris, alive);
+  std::vector<uint8_t> open(nf, 0);
+  for (uint32_t f = 0; f < nf; ++f) {
+    if (!alive[f]) continue;
+    for (int i = 0; i < 3; ++i) {
+      uint32_t u = tris[f][i], w = tris[f][(i + 1) % 3];
+      int others = 0;
+      for (uint32_t k = inc.start[u]; k < inc.start[u + 1]; ++k) {
+        uint32_t h = inc.faces[k];
+        if (h == f) continue;
+        const Tri &t = tris[h];
+        if (t[0] == w || t[1] == w || t[2] == w) {
+          comp[root(f)] = root(h);
+          ++others;
+        }
+      }
+      if (others == 0) open[f] = 1;
+    }
+  }
+  std::vector<double> volume(nf, 0.0);
+  std::vector<uint8_t> comp_open(nf, 0);
+  for (uint32_t f = 0; f < nf; ++f) {
+    if (!alive[f]) continue;
+    const Vec3 &a = g.points.work[tris[f][0]], &b = g.points.work[tris[f][1]],
+               &c = g.points.work[tris[f][2]];
+    volume[root(f)] += dot(a, cross(b, c));
+    comp_open[root(f)] |= open[f];
+  }
+  for (uint32_t f = 0; f < nf; ++f)
+    if (alive[f] && !comp_open[root(f)] && volume[root(f)] < 0) std::swap(tris[f][1], tris[f][2]);
+}
+
+std::size_t count_boundary_edges(const std::vector<Tri> &tris) {
+  std::vector<uint64_t> edges;
+  edges.reserve(tris.size() * 3);
+  for (const Tri &t : tris)
+    for (int i = 0; i < 3; ++i) {
+      uint32_t a = t[i], b = t[(i + 1) % 3];
+      edges.push_back(a < b ? (uint64_t(a) << 32 | b) : (uint64_t(b) << 32 | a));
+    }
+  std::sort(edges.begin(), edges.end());
+  std::size_t boundary = 0;
+  for (std::size_t i = 0; i < edges.size();) {
+    std::size_t j = i;
+    while (j < edges.size() && edges[j] == edges[i]) ++j;
+    boundary += (j - i == 1);
+    i = j;
+  }
+  return boundary;
+}
+
+}  // namespace
+
+std::vector<Tri> finish_mesh(GrowthState &g) {
+  const std::size_t nf = g.mesh.face_count();
+  std::vector<Tri> tris(nf);
+  std::vector<char> alive(nf, 1);
+  for (uint32_t f = 0; f < nf; ++f) {
+    tris[f] = g.mesh.oriented(f);
+    alive[f] = g.mesh.alive(f);
+  }
+  g.stats.triangles_removed += enforce_single_fans(g.points.size(), tris, alive);
+  orient_outward(g, tris, alive);
+  std::vector<Tri> out;
+  out.reserve(nf);
+  for (uint32_t f = 0; f < nf; ++f)
+    if (alive[f]) out.push_back(tris[f]);
+  g.stats.boundary_edges = count_boundary_edges(out);
+  return out;
+}
+
+}  // namespace moa

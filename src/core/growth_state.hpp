@@ -1,0 +1,50 @@
+// What Algorithm 1 and the loop module share: the points, the growing mesh, its crossing index,
+// the judgment and the statistics.
+#pragma once
+
+#include <functional>
+
+#include "core/intersection.hpp"
+#include "core/mesh_state.hpp"
+#include "core/neighbors.hpp"
+#include "core/opposite_angle.hpp"
+#include "core/point_set.hpp"
+#include "core/topology_judgment.hpp"
+
+namespace moa {
+
+struct GrowthState {
+  GrowthState(const PointSet &p, const Neighborhood &n, const Params &par, double cell_size,
+              moa_stats &st)
+      : points(p),
+        nb(n),
+        params(par),
+        mesh(p.size()),
+        crossings(p, cell_size),
+        judge(p, n, par, mesh, crossings),
+        search(p, n, par),
+        stats(st) {}
+
+  uint32_t add_face(const Tri &t) {
+    uint32_t f = mesh.add(t);
+    crossings.face_added(f, mesh);
+    return f;
+  }
+
+  const PointSet &points;
+  const Neighborhood &nb;
+  const Params &params;
+  MeshState mesh;
+  CrossingIndex crossings;
+  TopologyJudge judge;
+  OppositeAngleSearch search;
+  moa_stats &stats;
+};
+
+// Algorithm 1 (paper §3.5.1). `tick(fraction)` reports progress and may throw Cancelled.
+void build_mesh(GrowthState &g, const std::function<void(double)> &tick);
+
+// Algorithm 2, the loop module (paper §3.5.2).
+void fill_loops(GrowthState &g, const std::function<void(double)> &tick);
+
+}  // namespace moa

@@ -1,0 +1,226 @@
+// Crossing checks: Embree rays along the candidate's edges (a triangle crosses another when an
+// edge of one, cast as a segment ray, hits the other), an Embree point query for faces whose
+// edges could pierce the candidate, and the grid of recent faces; the exact predicates decide.
+#include "core/intersection.hpp"
+
+#include <embree3/rtcore.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <new>
+
+#include "core/predicates.hpp"
+
+namespace moa {
+namespace {
+
+// Padding of every broad-phase box in work units (the cloud spans a unit diagonal), well above
+// float rounding so that Embree never misses a face the exact test would call a crossing.
+constexpr double kPad = 1e-5;
+constexpr int kMaxCellsPerFace = 64;
+
+struct CollectContext {
+  RTCIntersectContext base;  // first member: Embree hands this pointer back to the filter
+  std::vector<uint32_t> *hits;
+};
+
+void collect_filter(const RTCFilterFunctionNArguments *args) {
+  auto *cc = reinterpret_cast<CollectContext *>(args->context);
+  cc->hits->push_back(RTCHitN_primID(args->hit, args->N, 0));
+  args->valid[0] = 0;  // keep traversing: we want every face along the segment
+}
+
+bool collect_point_query(RTCPointQueryFunctionArguments *args) {
+  static_cast<std::vector<uint32_t> *>(args->userPtr)->push_back(args->primID);
+  return false;
+}
+
+uint64_t cell_key(int64_t x, int64_t y, int64_t z) {
+  return (uint64_t(x & 0x1fffff) << 42) | (uint64_t(y & 0x1fffff) << 21) | uint64_t(z & 0x1fffff);
+}
+
+}  // namespace
+
+CrossingIndex::CrossingIndex(const PointSet &points, double cell_size)
+    : points_(points), cell_(cell_size) {
+  vertices_.resize(points.size() * 3 + 4);  // Embree reads 16 bytes at the last vertex
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    vertices_[3 * i] = float(points.work[i].x);
+    vertices_[3 * i + 1] = float(points.work[i].y);
+    vertices_[3 * i + 2] = float(points.work[i].z);
+  }
+  device_ = rtcNewDevice("verbose=0");
+  if (!device_) throw std::bad_alloc();
+}
+
+CrossingIndex::~CrossingIndex() {
+  if (scene_) rtcReleaseScene(static_cast<RTCScene>(scene_));
+  if (device_) rtcReleaseDevice(static_cast<RTCDevice>(device_));
+}
+
+void CrossingIndex::bounds(const Tri &t, Vec3 &lo, Vec3 &hi) const {
+  const Vec3 &a = points_.work[t[0]], &b = points_.work[t[1]], &c = points_.work[t[2]];
+  lo = {std::min({a.x, b.x, c.x}) - kPad, std::min({a.y, b.y, c.y}) - kPad,
+        std::min({a.z, b.z, c.z}) - kPad};
+  hi = {std::max({a.x, b.x, c.x}) + kPad, std::max({a.y, b.y, c.y}) + kPad,
+        std::max({a.z, b.z, c.z}) + kPad};
+}
+
+void CrossingIndex::grid_insert(uint32_t f, const Tri &t) {
+  Vec3 lo, hi;
+  bounds(t, lo, hi);
+  int64_t x0 = int64_t(std::floor(lo.x / cell_)), x1 = int64_t(std::floor(hi.x / cell_));
+  int64_t y0 = int64_t(std::floor(lo.y / cell_)), y1 = int64_t(std::floor(hi.y / cell_));
+  int64_t z0 = int64_t(std::floor(lo.z / cell_)), z1 = int64_t(std::floor(hi.z / cell_));
+  if ((x1 - x0 + 1) * (y1 - y0 + 1) * (z1 - z0 + 1) > kMaxCellsPerFace) {
+    oversized_.push_back(f);
+    return;
+  }
+  for (int64_t x = x0; x <= x1; ++x)
+    for (int64_t y = y0; y <= y1; ++y)
+      for (int64_t z = z0; z <= z1; ++z) grid_[cell_key(x, y, z)].push_back(f);
+}
+
+void CrossingIndex::rebuild(MeshState &mesh) {
+  auto device = static_cast<RTCDevice>(device_);
+  if (scene_) rtcReleaseScene(static_cast<RTCScene>(scene_));
+  RTCScene scene = rtcNewScene(device);
+  rtcSetSceneFlags(scene, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION | RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_MEDIUM);
+  RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, vertices_.data(),
+                             0, 3 * sizeof(float), points_.size());
+  const std::size_t count = mesh.face_count();
+  auto *idx = static_cast<uint32_t *>(rtcSetNewGeometryBuffer(
+      geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), count));
+  if (!idx) throw std::bad_alloc();
+  for (std::size_t f = 0; f < count; ++f)  // removed faces become degenerate, which Embree skips
+    for (int k = 0; k < 3; ++k)
+      idx[3 * f + k] = mesh.alive(uint32_t(f)) ? mesh.stored(uint32_t(f))[k] : 0;
+  rtcCommitGeometry(geom);
+  rtcAttachGeometry(scene, geom);
+  rtcReleaseGeometry(geom);
+  rtcCommitScene(scene);
+  if (rtcGetDeviceError(device) != RTC_ERROR_NONE) throw std::bad_alloc();
+  scene_ = scene;
+  committed_ = uint32_t(count);
+  grid_.clear();
+  oversized_.clear();
+  ++rebuilds_;
+}
+
+void CrossingIndex::face_added(uint32_t f, MeshState &mesh) {
+  if (stamp_.size() <= f) stamp_.resize(std::size_t(f) * 2 + 64, 0);
+  grid_insert(f, mesh.stored(f));
+  std::size_t pending = mesh.face_count() - committed_;
+  if (pending > std::max<std::size_t>(4096, committed_ / 2)) rebuild(mesh);
+}
+
+bool CrossingIndex::test_exact(const Tri &t, uint32_t f, MeshState &mesh) {
+  if (stamp_[f] == query_ || !mesh.alive(f)) return false;
+  stamp_[f] = query_;
+  const Tri &g = mesh.stored(f);
+  const Vec3 tp[3] = {points_.exact[t[0]], points_.exact[t[1]], points_.exact[t[2]]};
+  const Vec3 gp[3] = {points_.exact[g[0]], points_.exact[g[1]], points_.exact[g[2]]};
+  const unsigned ti[3] = {t[0], t[1], t[2]}, gi[3] = {g[0], g[1], g[2]};
+  return triangles_cross(tp, ti, gp, gi);
+}
+
+bool CrossingIndex::crosses(const Tri &t, MeshState &mesh) {
+  auto start = std::chrono::steady_clock::now();
+  struct Timer {
+    std::chrono::steady_clock::time_point s;
+    double &acc;
+    ~Timer() { acc += std::chrono::duration<double>(std::chrono::steady_clock::now() - s).count(); }
+  } timer{start, seconds_};
+
+  if (stamp_.size() < mesh.face_count()) stamp_.resize(mesh.face_count() * 2 + 64, 0);
+  if (++query_ == 0) {
+    std::fill(stamp_.begin(), stamp_.end(), 0);
+    query_ = 1;
+  }
+  // Faces sharing a vertex: the common case, decided exactly without any index.
+  for (uint32_t v : t)
+    for (uint32_t f : mesh.faces_at(v))
+      if (test_exact(t, f, mesh)) return true;
+
+  // Committed faces: rays along the three edges first, then a point query for faces whose
+  // own edges could pierce t.
+  if (scene_ && committed_ > 0) {
+    auto scene = static_cast<RTCScene>(scene_);
+    found_.clear();
+    CollectContext cc;
+    rtcInitIntersectContext(&cc.base);
+    cc.base.filter = collect_filter;
+    cc.hits = &found_;
+    for (int e = 0; e < 3; ++e) {
+      const Vec3 &p = points_.work[t[e]], &q = points_.work[t[(e + 1) % 3]];
+      RTCRayHit rh{};
+      // The segment, lengthened slightly at both ends so float rounding cannot shorten it.
+      Vec3 d = q - p, o = p - d * 1e-4;
+      rh.ray.org_x = float(o.x);
+      rh.ray.org_y = float(o.y);
+      rh.ray.org_z = float(o.z);
+      rh.ray.dir_x = float(d.x);
+      rh.ray.dir_y = float(d.y);
+      rh.ray.dir_z = float(d.z);
+      rh.ray.tnear = 0.f;
+      rh.ray.tfar = 1.0002f;
+      rh.ray.mask = 0xffffffffu;
+      rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+      rtcIntersect1(scene, &cc.base, &rh);
+    }
+    for (uint32_t f : found_)
+      if (test_exact(t, f, mesh)) return true;
+
+    found_.clear();
+    Vec3 lo, hi;
+    bounds(t, lo, hi);
+    Vec3 c = midpoint(lo, hi);
+    RTCPointQuery pq;
+    pq.x = float(c.x);
+    pq.y = float(c.y);
+    pq.z = float(c.z);
+    pq.time = 0.f;
+    pq.radius = float(norm(hi - lo) * 0.5 + kPad);
+    RTCPointQueryContext pctx;
+    rtcInitPointQueryContext(&pctx);
+    rtcPointQuery(scene, &pq, &pctx, collect_point_query, &found_);
+    for (uint32_t f : found_)
+      if (test_exact(t, f, mesh)) return true;
+  }
+
+  // Pending faces in the grid.
+  Vec3 lo, hi;
+  bounds(t, lo, hi);
+  int64_t x0 = int64_t(std::floor(lo.x / cell_)), x1 = int64_t(std::floor(hi.x / cell_));
+  int64_t y0 = int64_t(std::floor(lo.y / cell_)), y1 = int64_t(std::floor(hi.y / cell_));
+  int64_t z0 = int64_t(std::floor(lo.z / cell_)), z1 = int64_t(std::floor(hi.z / cell_));
+  if ((x1 - x0 + 1) * (y1 - y0 + 1) * (z1 - z0 + 1) > kMaxCellsPerFace) {
+    for (uint32_t f = committed_; f < mesh.face_count(); ++f)
+      if (test_exact(t, f, mesh)) return true;
+    return false;
+  }
+  for (int64_t x = x0; x <= x1; ++x)
+    for (int64_t y = y0; y <= y1; ++y)
+      for (int64_t z = z0; z <= z1; ++z) {
+        auto it = grid_.find(cell_key(x, y, z));
+        if (it == grid_.end()) continue;
+        for (uint32_t f : it->second)
+          if (test_exact(t, f, mesh)) return true;
+      }
+  for (uint32_t f : oversized_)
+    if (test_exact(t, f, mesh)) return true;
+  return false;
+}
+
+std::size_t CrossingIndex::memory_bytes() const {
+  std::size_t bytes = vertices_.capacity() * sizeof(float) + stamp_.capacity() * 4;
+  // Embree's BVH: roughly 64 bytes per committed triangle at medium quality.
+  bytes += std::size_t(committed_) * 64;
+  for (const auto &cell : grid_) bytes += 48 + cell.second.capacity() * 4;
+  return bytes;
+}
+
+}  // namespace moa

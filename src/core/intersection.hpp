@@ -1,0 +1,57 @@
+// Crossing checks for the topology judgment (paper §3.3, Type 1 intersections), backed by
+// Embree. Layout of the index as the mesh grows:
+//   - a committed Embree scene (BVH) over the bulk of the faces, rebuilt when the faces added
+//     since the last build outnumber half of those in it, so rebuilds cost O(F log F) in all;
+//   - a hash grid over the faces added since the last build.
+// Embree is the broad phase only: every face it proposes is decided by the exact predicates on
+// the caller's coordinates, so float rounding inside Embree can never let a crossing through.
+#pragma once
+
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "core/mesh_state.hpp"
+#include "core/point_set.hpp"
+
+namespace moa {
+
+class CrossingIndex {
+ public:
+  CrossingIndex(const PointSet &points, double cell_size);
+  ~CrossingIndex();
+  CrossingIndex(const CrossingIndex &) = delete;
+  CrossingIndex &operator=(const CrossingIndex &) = delete;
+
+  // True when triangle t would meet an existing face anywhere other than in shared vertices
+  // and edges.
+  bool crosses(const Tri &t, MeshState &mesh);
+  // Registers face f (already added to mesh).
+  void face_added(uint32_t f, MeshState &mesh);
+
+  std::size_t rebuilds() const { return rebuilds_; }
+  double milliseconds() const { return seconds_ * 1000.0; }
+  std::size_t memory_bytes() const;
+
+ private:
+  void rebuild(MeshState &mesh);
+  void grid_insert(uint32_t f, const Tri &t);
+  bool test_exact(const Tri &t, uint32_t f, MeshState &mesh);
+  void bounds(const Tri &t, Vec3 &lo, Vec3 &hi) const;
+
+  const PointSet &points_;
+  std::vector<float> vertices_;  // work coordinates, Embree's shared vertex buffer
+  void *device_ = nullptr;
+  void *scene_ = nullptr;
+  uint32_t committed_ = 0;  // faces [0, committed_) are in the scene
+  double cell_ = 0;
+  std::unordered_map<uint64_t, std::vector<uint32_t>> grid_;
+  std::vector<uint32_t> oversized_;  // pending faces spanning too many cells
+  std::vector<uint32_t> stamp_;      // per face: last query that tested it
+  uint32_t query_ = 0;
+  std::vector<uint32_t> found_;
+  std::size_t rebuilds_ = 0;
+  double seconds_ = 0;
+};
+
+}  // namespace moa

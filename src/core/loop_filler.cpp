@@ -1,0 +1,332 @@
+// Algorithm 2 of the paper (§3.5.2), the loop module: the boundary loops Algorithm 1 left are
+// traced (inner and outer loops of one hole alike, a vertex met twice counted twice), and each
+// loop small enough to be a hole rather than a border is filled by MOA among its own vertices:
+// its shortest segment first, the maximum opposite loop vertex that passes the judgment, the
+// loop splitting or shrinking as triangles are added (Fig. 10). Points Algorithm 1 left out
+// next to a loop join its candidates, so the filling takes them in.
+#include <algorithm>
+#include <cmath>
+#include <queue>
+#include <unordered_map>
+#include <vector>
+
+#include "core/growth_state.hpp"
+
+namespace moa {
+namespace {
+
+uint64_t key(uint32_t u, uint32_t v) { return (uint64_t(u) << 32) | v; }
+
+struct Loop {
+  std::vector<uint32_t> vertices;  // in order; a hole edge runs from each to the next
+  std::vector<uint32_t> pool;      // candidate apexes: the loop's vertices and nearby free points
+  std::vector<uint32_t> outer;     // vertices of other loops next to this one, tried last
+  bool fillable = false;
+};
+
+struct HoleEdge {
+  double length;
+  uint32_t from, to;
+  bool operator>(const HoleEdge &o) const {
+    if (length != o.length) return length > o.length;
+    if (from != o.from) return from > o.from;
+    return to > o.to;
+  }
+};
+
+// Largest number of loop vertices ranked for one segment: the nearest ones to its midpoint.
+constexpr std::size_t kMaxLoopCandidates = 48;
+constexpr int kPasses = 4;  // the last two relax the local-plane tests
+
+class LoopFiller {
+ public:
+  explicit LoopFiller(GrowthState &g) : g_(g) {}
+
+  std::size_t count_loops() {
+    collect_hole_edges();
+    return trace_loops().size();
+  }
+
+  void run(const std::function<void(double)> &tick) {
+    collect_hole_edges();
+    loops_ = trace_loops();
+    if (g_.stats.boundary_loops_before == 0) g_.stats.boundary_loops_before = loops_.size();
+    classify_and_pool();
+    for (int pass = 0; pass < kPasses; ++pass) {
+      bool relaxed = pass >= kPasses / 2;
+      std::size_t added = fill_pass(relaxed);
+      tick(double(pass + 1) / kPasses);
+      if (added == 0 && relaxed) break;
+    }
+  }
+
+ private:
+  // Hole edges: the reverse of each boundary edge of a face, so that a face filling the hole
+  // along it keeps the orientation.
+  void collect_hole_edges() {
+    out_.clear();
+    for (uint32_t f = 0; f < g_.mesh.face_count(); ++f) {
+      if (!g_.mesh.alive(f)) continue;
+      Tri t = g_.mesh.oriented(f);
+      for (int i = 0; i < 3; ++i) {
+        uint32_t a = t[i], b = t[(i + 1) % 3], fs[2];
+        if (g_.mesh.edge_faces(a, b, fs) == 1) out_[b].push_back(a);
+      }
+    }
+  }
+
+  // Next hole edge at v after arriving from u: the first one met turning clockwise from vu
+  // (the face on uv lies counter-clockwise of it, the hole clockwise).
+  uint32_t pick_next(uint32_t u, uint32_t v, std::vector<uint32_t> &outs) {
+    if (outs.size() == 1) return 0;
+    uint32_t fs[2];
+    g_.mesh.edge_faces(u, v, fs);
+    Tri f = g_.mesh.oriented(fs[0]);
+    const auto &w = g_.points.work;
+    Vec3 n = normalized(cross(w[f[1]] - w[f[0]], w[f[2]] - w[f[0]]));
+    Vec3 d0 = w[u] - w[v];
+    d0 = d0 - n * dot(d0, n);
+    uint32_t best = 0;
+    double best_angle = 1e9;
+    for (uint32_t k = 0; k < outs.size(); ++k) {
+      Vec3 d = w[outs[k]] - w[v];
+      d = d - n * dot(d, n);
+      double ccw = std::atan2(dot(n, cross(d0, d)), dot(d0, d));
+      double cw = ccw > 0 ? 2 * kPi - ccw : -ccw;
+      if (cw < best_angle) {
+        best_angle = cw;
+        best = k;
+      }
+    }
+    return best;
+  }
+
+  std::vector<Loop> trace_loops() {
+    std::vector<Loop> loops;
+    std::vector<uint32_t> starts;
+    for (auto &kv : out_) starts.push_back(kv.first);
+    std::sort(starts.begin(), starts.end());  // deterministic order
+    for (uint32_t s : starts) {
+      while (!out_[s].empty()) {
+        Loop loop;
+        uint32_t prev = s, cur = out_[s].back();
+        out_[s].pop_back();
+        loop.vertices.push_back(s);
+        while (cur != s || !out_[s].empty()) {
+          auto &outs = out_[cur];
+          if (outs.empty()) break;
+          if (cur == s) break;
+          loop.vertices.push_back(cur);
+          uint32_t k = pick_next(prev, cur, outs);
+          uint32_t next = outs[k];
+          outs.erase(outs.begin() + k);
+          prev = cur;
+          cur = next;
+        }
+        loops.push_back(std::move(loop));
+      }
+    }
+    return loops;
+  }
+
+  void classify_and_pool() {
+    const auto &w = g_.points.work;
+    std::unordered_map<uint32_t, uint32_t> &loop_of_vertex = loop_of_vertex_;
+    for (uint32_t l = 0; l < loops_.size(); ++l) {
+      Loop &loop = loops_[l];
+      double perimeter = 0, spacing = 0;
+      const std::size_t n = loop.vertices.size();
+      for (std::size_t i = 0; i < n; ++i) {
+        uint32_t a = loop.vertices[i], b = loop.vertices[(i + 1) % n];
+        perimeter += dist(w[a], w[b]);
+        spacing += g_.nb.spacing[a];
+        hole_loop_[key(a, b)] = l;
+        loop_of_vertex.emplace(a, l);
+      }
+      spacing /= double(n);
+      loop.fillable = g_.params.solid != 0 || perimeter <= g_.params.hole_size * spacing;
+    }
+    // Candidates of a loop: its own vertices, and the neighbours of its vertices that lie on
+    // another loop (the outer loop around an island, Fig. 9 (2), whose lists the paper
+    // combines) or that Algorithm 1 left out (step 1 of §3.5.2).
+    const bool take_in = g_.params.take_in_points != 0;
+    std::vector<uint32_t> mark(g_.points.size(), kNone);
+    for (uint32_t l = 0; l < loops_.size(); ++l) {
+      Loop &loop = loops_[l];
+      loop.pool = loop.vertices;
+      for (uint32_t v : loop.vertices) mark[v] = l;
+      for (uint32_t v : loop.vertices) {
+        const uint32_t *nb = g_.nb.of(v);
+        for (unsigned j = 0; j < g_.nb.k; ++j) {
+          uint32_t p = nb[j];
+          if (mark[p] == l) continue;
+          if (!g_.mesh.is_used(p)) {
+            if (!take_in) continue;
+            mark[p] = l;
+            loop.pool.push_back(p);
+          } else if (loop_of_vertex.count(p)) {
+            mark[p] = l;
+            loop.outer.push_back(p);
+          }
+        }
+      }
+    }
+  }
+
+  void push(uint32_t from, uint32_t to) {
+    queue_.push({dist(g_.points.work[from], g_.points.work[to]), from, to});
+  }
+
+  std::size_t fill_pass(bool relaxed) {
+    for (auto &kv : hole_loop_) {
+      uint32_t from = uint32_t(kv.first >> 32), to = uint32_t(kv.first);
+      if (loops_[kv.second].fillable) push(from, to);
+    }
+    std::size_t added = 0;
+    while (!queue_.empty()) {
+      HoleEdge e = queue_.top();
+      queue_.pop();
+      auto it = hole_loop_.find(key(e.from, e.to));
+      if (it == hole_loop_.end()) continue;
+      uint32_t fs[2];
+      if (g_.mesh.edge_faces(e.from, e.to, fs) != 1) {
+        hole_loop_.erase(it);
+        continue;
+      }
+      if (fill_edge(e.from, e.to, it->second, relaxed)) ++added;
+    }
+    return added;
+  }
+
+  bool fill_edge(uint32_t u, uint32_t v, uint32_t loop_id, bool relaxed) {
+    const auto &w = g_.points.work;
+    uint32_t fs[2];
+    g_.mesh.edge_faces(u, v, fs);
+    Tri f = g_.mesh.oriented(fs[0]);
+    uint32_t z = kNone;
+    for (uint32_t x : f)
+      if (x != u && x != v) z = x;
+    Vec3 ab = normalized(w[v] - w[u]);
+    Vec3 away = w[u] - w[z];
+    Vec3 side = away - ab * dot(away, ab);
+
+    // The loop's own candidates first; the vertices of neighbouring loops only when none of
+    // those fits (an island inside a hole: the inner and outer loops combine, Fig. 10 (3)).
+    Loop &loop = loops_[loop_id];
+    if (!relaxed) g_.search.sphere_points(u, v, sphere_);
+    return try_candidates(u, v, z, side, loop.pool, loop_id, relaxed) ||
+           try_candidates(u, v, z, side, loop.outer, loop_id, relaxed);
+  }
+
+  // Once a triangle joins an island to the loop around it, the two lists become one.
+  void merge_loop_of(uint32_t vertex, uint32_t loop_id) {
+    auto it = loop_of_vertex_.find(vertex);
+    if (it == loop_of_vertex_.end() || it->second == loop_id) return;
+    const std::vector<uint32_t> &other = loops_[it->second].vertices;
+    std::vector<uint32_t> &pool = loops_[loop_id].pool;
+    pool.insert(pool.end(), other.begin(), other.end());
+  }
+
+  bool try_candidates(uint32_t u, uint32_t v, uint32_t z, Vec3 side,
+                      const std::vector<uint32_t> &pool, uint32_t loop_id, bool relaxed) {
+    const auto &w = g_.points.work;
+    Vec3 m = midpoint(w[u], w[v]);
+    near_.clear();
+    for (uint32_t c : pool)
+      if (c != u && c != v && c != z) near_.push_back(c);
+    if (near_.size() > kMaxLoopCandidates) {
+      std::nth_element(near_.begin(), near_.begin() + kMaxLoopCandidates, near_.end(),
+                       [&](uint32_t a, uint32_t b) {
+                         double da = norm2(w[a] - m), db = norm2(w[b] - m);
+                         return da != db ? da < db : a < b;
+                       });
+      near_.resize(kMaxLoopCandidates);
+    }
+    g_.search.rank(u, v, near_, side, z, ranked_);
+    for (const Candidate &c : ranked_) {
+      Tri t{u, v, c.vertex};
+      Verdict verdict = g_.judge.judge(t, sphere_.data(), relaxed ? 0 : sphere_.size(), relaxed);
+      TopologyJudge::count(verdict, g_.stats);
+      if (verdict != Verdict::Accept) continue;
+      g_.add_face(t);
+      ++g_.stats.triangles_loops;
+      if (&pool == &loops_[loop_id].outer) merge_loop_of(c.vertex, loop_id);
+      // New hole edges belong to the same loop (or to the pieces it splits into).
+      for (int i = 0; i < 3; ++i) {
+        uint32_t a = t[i], b = t[(i + 1) % 3], gs[2];
+        int n = g_.mesh.edge_faces(a, b, gs);
+        if (n == 1) {
+          hole_loop_[key(b, a)] = loop_id;
+          push(b, a);
+        } else {
+          hole_loop_.erase(key(a, b));
+        }
+      }
+      return true;
+    }
+    return false;
+  }
+
+  GrowthState &g_;
+  std::unordered_map<uint32_t, std::vector<uint32_t>> out_;
+  std::vector<Loop> loops_;
+  std::unordered_map<uint64_t, uint32_t> hole_loop_;
+  std::unordered_map<uint32_t, uint32_t> loop_of_vertex_;
+  std::priority_queue<HoleEdge, std::vector<HoleEdge>, std::greater<HoleEdge>> queue_;
+  std::vector<uint32_t> near_, sphere_;
+  std::vector<Candidate> ranked_;
+};
+
+// Removes, at every vertex whose faces form several fans, the faces of all fans but the
+// largest, opening one hole where a loop could not be closed around a pinch.
+std::size_t open_pinched_vertices(GrowthState &g) {
+  std::size_t removed = 0;
+  std::vector<uint32_t> faces, group;
+  for (uint32_t v = 0; v < g.points.size(); ++v) {
+    if (g.mesh.fan_count(v) < 2) continue;
+    faces = g.mesh.faces_at(v);
+    const std::size_t n = faces.size();
+    group.resize(n);
+    for (std::size_t i = 0; i < n; ++i) group[i] = uint32_t(i);
+    auto root = [&](uint32_t x) {
+      while (group[x] != x) x = group[x] = group[group[x]];
+      return x;
+    };
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = i + 1; j < n; ++j) {
+        const Tri &a = g.mesh.stored(faces[i]), &b = g.mesh.stored(faces[j]);
+        int shared = 0;
+        for (uint32_t x : a) shared += (x == b[0] || x == b[1] || x == b[2]);
+        if (shared >= 2) group[root(uint32_t(i))] = root(uint32_t(j));
+      }
+    std::vector<uint32_t> size(n, 0);
+    for (std::size_t i = 0; i < n; ++i) ++size[root(uint32_t(i))];
+    uint32_t best = root(0);
+    for (std::size_t i = 0; i < n; ++i)
+      if (size[root(uint32_t(i))] > size[best]) best = root(uint32_t(i));
+    for (std::size_t i = 0; i < n; ++i)
+      if (root(uint32_t(i)) != best) {
+        g.mesh.remove(faces[i]);
+        ++removed;
+      }
+  }
+  return removed;
+}
+
+}  // namespace
+
+void fill_loops(GrowthState &g, const std::function<void(double)> &tick) {
+  // Fill, then open the pinches that filling could not resolve and fill again.
+  constexpr int kRounds = 3;
+  for (int round = 0; round < kRounds; ++round) {
+    LoopFiller filler(g);
+    filler.run([&](double f) { tick((round + f) / kRounds); });
+    std::size_t removed = open_pinched_vertices(g);
+    g.stats.triangles_removed += removed;
+    if (removed == 0) break;
+  }
+  g.stats.boundary_loops_after = LoopFiller(g).count_loops();
+  tick(1.0);
+}
+
+}  // namespace moa

@@ -1,0 +1,148 @@
+// Algorithm 1 of the paper (§3.5.1): the list of segments, shortest first; for each target
+// segment the maximum opposite point on each open side that passes the topology judgment;
+// every new triangle side enters the list.
+#include <algorithm>
+#include <queue>
+#include <vector>
+
+#include "core/growth_state.hpp"
+
+namespace moa {
+namespace {
+
+// Bare segments that fail are replaced by the same point's next neighbour, up to this rank:
+// on a thin slab a point's nearest neighbour lies on the other sheet.
+constexpr unsigned kSeedRanks = 6;
+
+struct Segment {
+  double length;
+  uint32_t a, b;
+  uint32_t seed = kNone;  // for a seed segment: the point whose neighbour list it came from
+  unsigned rank = 0;      // and the neighbour's rank in that list
+  bool operator>(const Segment &o) const {
+    if (length != o.length) return length > o.length;
+    if (a != o.a) return a > o.a;
+    return b > o.b;
+  }
+};
+
+using SegmentList = std::priority_queue<Segment, std::vector<Segment>, std::greater<Segment>>;
+
+class Builder {
+ public:
+  explicit Builder(GrowthState &g) : g_(g) {}
+
+  void seed_list() {
+    // Step 2: every point with its nearest neighbour.
+    for (uint32_t i = 0; i < g_.points.size(); ++i) push_seed(i, 0);
+  }
+
+  void requeue_open_edges() {
+    for (uint32_t f = 0; f < g_.mesh.face_count(); ++f) {
+      if (!g_.mesh.alive(f)) continue;
+      const Tri &t = g_.mesh.stored(f);
+      for (int i = 0; i < 3; ++i) {
+        uint32_t fs[2];
+        if (g_.mesh.edge_faces(t[i], t[(i + 1) % 3], fs) == 1) push(t[i], t[(i + 1) % 3]);
+      }
+    }
+  }
+
+  void run(const std::function<void(double)> &tick, double from, double to) {
+    std::size_t steps = 0;
+    const double expected = 2.0 * double(g_.points.size());
+    while (!list_.empty()) {
+      Segment s = list_.top();
+      list_.pop();
+      if ((++steps & 4095) == 0)
+        tick(from + (to - from) * std::min(1.0, double(g_.mesh.face_count()) / expected));
+      if (!process(s.a, s.b) && s.seed != kNone && s.rank + 1 < std::min(kSeedRanks, g_.nb.k))
+        push_seed(s.seed, s.rank + 1);
+    }
+  }
+
+ private:
+  void push(uint32_t a, uint32_t b) {
+    if (a > b) std::swap(a, b);
+    list_.push({dist(g_.points.work[a], g_.points.work[b]), a, b});
+  }
+
+  void push_seed(uint32_t i, unsigned rank) {
+    // A mutual nearest pair is listed twice, once for each point, so that each point moves on
+    // to its own next neighbour if the pair finds no triangle.
+    uint32_t j = g_.nb.of(i)[rank];
+    Segment s{dist(g_.points.work[i], g_.points.work[j]), std::min(i, j), std::max(i, j), i, rank};
+    list_.push(s);
+  }
+
+  // Returns false when a bare segment found no triangle at all.
+  bool process(uint32_t a, uint32_t b) {
+    uint32_t fs[2];
+    int n = g_.mesh.edge_faces(a, b, fs);
+    if (n >= 2) return true;
+    if (n == 0) {
+      if (g_.mesh.fan_closed(a) || g_.mesh.fan_closed(b)) return true;
+      if (!grow(a, b, kNone)) return false;
+      n = g_.mesh.edge_faces(a, b, fs);
+    }
+    // Steps 5-6: the other side of the segment, opposite the triangle it already has.
+    if (n == 1) grow(a, b, fs[0]);
+    return true;
+  }
+
+  // Tries the candidates of one side of segment ab, best angle first; adds the first that
+  // passes the judgment. `face` is the triangle already on ab, or kNone for a bare segment.
+  bool grow(uint32_t a, uint32_t b, uint32_t face) {
+    g_.search.sphere_points(a, b, sphere_);
+    Vec3 side{};
+    uint32_t opposite = kNone;
+    Tri order{a, b, 0};
+    if (face != kNone) {
+      Tri f = g_.mesh.oriented(face);
+      for (uint32_t x : f)
+        if (x != a && x != b) opposite = x;
+      // The new triangle runs along ab against the existing one.
+      for (int i = 0; i < 3; ++i)
+        if (f[i] == a && f[(i + 1) % 3] == b) order = {b, a, 0};
+      const Vec3 &A = g_.points.work[a], &B = g_.points.work[b];
+      Vec3 ab = normalized(B - A);
+      Vec3 away = A - g_.points.work[opposite];
+      side = away - ab * dot(away, ab);
+    }
+    g_.search.rank(a, b, sphere_, side, opposite, ranked_);
+    for (const Candidate &c : ranked_) {
+      Tri t{order[0], order[1], c.vertex};
+      Verdict v = g_.judge.judge(t, sphere_.data(), sphere_.size());
+      TopologyJudge::count(v, g_.stats);
+      if (v != Verdict::Accept) continue;
+      g_.add_face(t);
+      ++g_.stats.triangles_mesh;
+      for (int i = 0; i < 3; ++i) {
+        uint32_t u = t[i], w = t[(i + 1) % 3], fs[2];
+        if (g_.mesh.edge_faces(u, w, fs) == 1) push(u, w);
+      }
+      return true;
+    }
+    return false;
+  }
+
+  GrowthState &g_;
+  SegmentList list_;
+  std::vector<uint32_t> sphere_;
+  std::vector<Candidate> ranked_;
+};
+
+}  // namespace
+
+void build_mesh(GrowthState &g, const std::function<void(double)> &tick) {
+  Builder builder(g);
+  builder.seed_list();
+  builder.run(tick, 0.0, 0.8);
+  // A second pass: segments that found no partner early may find one now that their
+  // surroundings are built.
+  builder.requeue_open_edges();
+  builder.run(tick, 0.8, 1.0);
+  tick(1.0);
+}
+
+}  // namespace moa

@@ -1,0 +1,29 @@
+// Stage 2 (DESIGN.md §2.2; paper §3.5.1 steps 1-2): k nearest neighbours of every point, the
+// local point spacing and the local reference plane (PCA normal).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "core/geometry.hpp"
+#include "core/point_set.hpp"
+
+namespace moa {
+
+struct Neighborhood {
+  unsigned k = 0;
+  std::vector<uint32_t> knn;   // k per point, nearest first, the point itself excluded
+  std::vector<float> spacing;  // mean distance to the nearest few neighbours (work units)
+  std::vector<Vec3> normal;    // unit normal of the least-squares plane, unoriented
+
+  const uint32_t *of(uint32_t i) const { return knn.data() + std::size_t(i) * k; }
+};
+
+// Parallel over points (TBB); the result does not depend on the number of threads.
+// `tick(fraction)` is called now and then from the calling thread; it may throw Cancelled.
+
+Neighborhood compute_neighbors(const PointSet &points, unsigned k,
+                               const std::function<void(double)> &tick);
+
+}  // namespace moa

@@ -1,0 +1,49 @@
+#include "core/opposite_angle.hpp"
+
+#include <algorithm>
+
+namespace moa {
+
+OppositeAngleSearch::OppositeAngleSearch(const PointSet &points, const Neighborhood &nb,
+                                         const Params &params)
+    : points_(points), nb_(nb), radius_factor_(params.sphere_radius), mark_(points.size(), 0) {}
+
+void OppositeAngleSearch::sphere_points(uint32_t a, uint32_t b, std::vector<uint32_t> &out) {
+  out.clear();
+  if (++stamp_ == 0) {
+    std::fill(mark_.begin(), mark_.end(), 0);
+    stamp_ = 1;
+  }
+  const Vec3 &A = points_.work[a], &B = points_.work[b];
+  Vec3 m = midpoint(A, B);
+  double spacing = 0.5 * (double(nb_.spacing[a]) + double(nb_.spacing[b]));
+  double r = std::max(radius_factor_ * spacing, 0.55 * dist(A, B));
+  double r2 = r * r;
+  for (uint32_t s : {a, b}) {
+    const uint32_t *list = nb_.of(s);
+    for (unsigned j = 0; j < nb_.k; ++j) {
+      uint32_t p = list[j];
+      if (mark_[p] == stamp_) continue;
+      mark_[p] = stamp_;
+      if (norm2(points_.work[p] - m) < r2) out.push_back(p);
+    }
+  }
+}
+
+void OppositeAngleSearch::rank(uint32_t a, uint32_t b, const std::vector<uint32_t> &pool, Vec3 side,
+                               uint32_t exclude, std::vector<Candidate> &out) const {
+  out.clear();
+  const Vec3 &A = points_.work[a], &B = points_.work[b];
+  bool any_side = norm2(side) == 0;
+  for (uint32_t c : pool) {
+    if (c == a || c == b || c == exclude) continue;
+    const Vec3 &C = points_.work[c];
+    if (!any_side && dot(C - A, side) <= 0) continue;
+    out.push_back({angle_at(C, A, B), c});
+  }
+  std::sort(out.begin(), out.end(), [](const Candidate &x, const Candidate &y) {
+    return x.angle != y.angle ? x.angle > y.angle : x.vertex < y.vertex;
+  });
+}
+
+}  // namespace moa

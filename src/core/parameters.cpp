@@ -1,0 +1,87 @@
+#include "core/parameters.hpp"
+
+#include <vector>
+
+namespace moa {
+namespace {
+
+struct ParamRow {
+  const char *name;
+  const char *description;
+  double min_value;
+  double max_value;
+  bool integral;
+  double Params::*field;
+};
+
+// Name, description, min, max, integral, field. Defaults live in one place only: the
+// member initialisers of Params.
+const ParamRow kRows[] = {
+    {"threads",
+     "worker threads for the parallel stages; 0 uses every core. The mesh does not "
+     "depend on it",
+     0, 1024, true, &Params::threads},
+    {"neighbors", "k of the k-nearest-neighbour graph that supplies the candidate points", 8, 64,
+     true, &Params::neighbors},
+    {"sphere_radius",
+     "radius R of the candidate sphere around a target segment's midpoint, "
+     "in units of the local point spacing (never less than just over half the segment)",
+     0.6, 8, false, &Params::sphere_radius},
+    {"flatness_a",
+     "threshold a of the topology judgment function T = (|PD|/b)^2 (|PI|/|DI|)^c: "
+     "a triangle is rejected when a neighbour in its sphere has T >= a",
+     0.01, 1e9, false, &Params::flatness_a},
+    {"flatness_c", "exponent c of the topology judgment function T", 0.25, 4, false,
+     &Params::flatness_c},
+    {"edge_fold_angle",
+     "degrees; two triangles sharing an edge must open at least this angle "
+     "alpha (180 = flat), smaller is a fold",
+     0, 179, false, &Params::edge_fold_angle},
+    {"vertex_fold_angle",
+     "degrees; two triangles sharing only a vertex whose centre directions "
+     "make less than this angle alpha are examined by beta and gamma",
+     0, 180, false, &Params::vertex_fold_angle},
+    {"vertex_open_angle",
+     "degrees; when beta and gamma both exceed this the vertex-sharing pair "
+     "is a duplicated fan and rejected",
+     0, 180, false, &Params::vertex_open_angle},
+    {"max_normal_deviation",
+     "degrees; largest angle between a triangle's normal and the local "
+     "plane fitted at each of its vertices",
+     1, 90, false, &Params::max_normal_deviation},
+    {"hole_size",
+     "largest hole the loop module closes, as its perimeter in units of the local "
+     "point spacing; larger loops are treated as true borders",
+     0, 1e9, false, &Params::hole_size},
+    {"solid",
+     "1 closes every hole whatever its size (the paper's solid models); 0 keeps large "
+     "borders open",
+     0, 1, true, &Params::solid},
+    {"take_in_points", "1 lets the loop module take in points Algorithm 1 left out", 0, 1, true,
+     &Params::take_in_points},
+};
+
+}  // namespace
+
+const ParamSpec *param_table(std::size_t &count) {
+  static const std::vector<ParamSpec> table = [] {
+    const Params defaults;
+    std::vector<ParamSpec> out;
+    for (const ParamRow &r : kRows)
+      out.push_back({r.name, r.description, defaults.*(r.field), r.min_value, r.max_value,
+                     r.integral, r.field});
+    return out;
+  }();
+  count = table.size();
+  return table.data();
+}
+
+const ParamSpec *find_param(std::string_view name) {
+  std::size_t count = 0;
+  const ParamSpec *table = param_table(count);
+  for (std::size_t i = 0; i < count; ++i)
+    if (name == table[i].name) return &table[i];
+  return nullptr;
+}
+
+}  // namespace moa

@@ -1,0 +1,129 @@
+// Stage 1: points. Exact duplicates collapse onto their first occurrence so that every output
+// index is a caller's index; the Morton order makes neighbour queries and the growing mesh
+// cache-friendly.
+#include "core/point_set.hpp"
+
+#include <tbb/parallel_sort.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <string>
+
+#include "core/predicates.hpp"
+#include "core/reconstruct.hpp"
+
+namespace moa {
+namespace {
+
+// Beyond this magnitude squared distances overflow; the caller must rescale.
+constexpr double kMaxMagnitude = 1e150;
+
+std::uint64_t spread_bits(std::uint64_t v) {
+  v &= 0x1fffff;
+  v = (v | v << 32) & 0x1f00000000ffffULL;
+  v = (v | v << 16) & 0x1f0000ff0000ffULL;
+  v = (v | v << 8) & 0x100f00f00f00f00fULL;
+  v = (v | v << 4) & 0x10c30c30c30c30c3ULL;
+  v = (v | v << 2) & 0x1249249249249249ULL;
+  return v;
+}
+
+void check_finite(const double *xyz, std::size_t count) {
+  for (std::size_t i = 0; i < count * 3; ++i) {
+    if (!std::isfinite(xyz[i]))
+      throw Error(MOA_ERROR_INVALID_INPUT,
+                  "point " + std::to_string(i / 3) + " has a non-finite coordinate");
+    if (std::fabs(xyz[i]) > kMaxMagnitude)
+      throw Error(MOA_ERROR_INVALID_INPUT,
+                  "point " + std::to_string(i / 3) +
+                      " has a coordinate beyond 1e150 in magnitude; rescale the input");
+  }
+}
+
+void check_not_collinear(const std::vector<Vec3> &p) {
+  std::size_t b = 1;
+  // p holds distinct points, so p[0] and p[1] define a line.
+  for (std::size_t c = 2; c < p.size(); ++c)
+    if (!collinear(p[0], p[b], p[c])) return;
+  throw Error(MOA_ERROR_INVALID_INPUT, "all points are collinear: no surface passes through them");
+}
+
+}  // namespace
+
+PointSet prepare_points(const double *xyz, std::size_t count) {
+  if (count < 3)
+    throw Error(MOA_ERROR_INVALID_INPUT,
+                "at least 3 points are needed, got " + std::to_string(count));
+  check_finite(xyz, count);
+
+  PointSet ps;
+  ps.input_count = count;
+
+  // Merge exact duplicates: sort by coordinates, index breaking ties, keep the first of a run.
+  std::vector<uint32_t> order(count);
+  std::iota(order.begin(), order.end(), 0u);
+  auto at = [xyz](uint32_t i) { return Vec3{xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]}; };
+  tbb::parallel_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+    const double *pa = xyz + 3 * std::size_t(a), *pb = xyz + 3 * std::size_t(b);
+    if (pa[0] != pb[0]) return pa[0] < pb[0];
+    if (pa[1] != pb[1]) return pa[1] < pb[1];
+    if (pa[2] != pb[2]) return pa[2] < pb[2];
+    return a < b;
+  });
+  std::vector<uint32_t> unique;
+  unique.reserve(count);
+  for (std::size_t k = 0; k < count; ++k) {
+    if (k > 0) {
+      const double *pa = xyz + 3 * std::size_t(order[k]), *pb = xyz + 3 * std::size_t(order[k - 1]);
+      if (pa[0] == pb[0] && pa[1] == pb[1] && pa[2] == pb[2]) continue;
+    }
+    unique.push_back(order[k]);
+  }
+  ps.duplicates = count - unique.size();
+  if (unique.size() < 3)
+    throw Error(MOA_ERROR_INVALID_INPUT,
+                "only " + std::to_string(unique.size()) +
+                    " distinct points after merging exact duplicates; at least 3 are needed");
+
+  Vec3 lo = at(unique[0]), hi = lo;
+  for (uint32_t i : unique) {
+    Vec3 p = at(i);
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+  Vec3 center = midpoint(lo, hi);
+  double extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+  if (!(extent > 1e-280))
+    throw Error(MOA_ERROR_INVALID_INPUT,
+                "the points span less than 1e-280: too small to be told apart; rescale the input");
+  double diag = extent * norm((hi - lo) * (1.0 / extent));  // scaled: no underflow at 1e-300
+
+  // Morton order over the bounding cube; ties (same cell) keep the caller's order.
+  std::vector<std::pair<uint64_t, uint32_t>> keyed(unique.size());
+  const double cells = double(1 << 21) - 1;
+  for (std::size_t k = 0; k < unique.size(); ++k) {
+    Vec3 p = at(unique[k]);
+    auto q = [&](double v, double l) {
+      return std::uint64_t(std::clamp((v - l) / extent * cells, 0.0, cells));
+    };
+    std::uint64_t key =
+        spread_bits(q(p.x, lo.x)) | spread_bits(q(p.y, lo.y)) << 1 | spread_bits(q(p.z, lo.z)) << 2;
+    keyed[k] = {key, unique[k]};
+  }
+  tbb::parallel_sort(keyed.begin(), keyed.end());
+
+  ps.exact.resize(keyed.size());
+  ps.work.resize(keyed.size());
+  ps.original.resize(keyed.size());
+  for (std::size_t k = 0; k < keyed.size(); ++k) {
+    Vec3 p = at(keyed[k].second);
+    ps.exact[k] = p;
+    ps.work[k] = (p - center) * (1.0 / diag);
+    ps.original[k] = keyed[k].second;
+  }
+  check_not_collinear(ps.exact);
+  return ps;
+}
+
+}  // namespace moa

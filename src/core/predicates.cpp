@@ -1,0 +1,202 @@
+// Exact predicates: Shewchuk-style static error bounds decide most signs in double precision;
+// when the bound cannot, the determinant is recomputed exactly with GMP rationals (doubles
+// convert to rationals without loss).
+#include "core/predicates.hpp"
+
+#include <gmpxx.h>
+
+#include <cmath>
+
+namespace moa {
+namespace {
+
+constexpr double kEps = 1.1102230246251565e-16;  // 2^-53
+constexpr double kOrient3dBound = (7.0 + 56.0 * kEps) * kEps;
+constexpr double kOrient2dBound = (3.0 + 16.0 * kEps) * kEps;
+
+int sign_of(const mpq_class &v) { return sgn(v); }
+
+int orient3d_exact(const Vec3 &a, const Vec3 &b, const Vec3 &c, const Vec3 &d) {
+  mpq_class ax(a.x), ay(a.y), az(a.z);
+  mpq_class bx = mpq_class(b.x) - ax, by = mpq_class(b.y) - ay, bz = mpq_class(b.z) - az;
+  mpq_class cx = mpq_class(c.x) - ax, cy = mpq_class(c.y) - ay, cz = mpq_class(c.z) - az;
+  mpq_class dx = mpq_class(d.x) - ax, dy = mpq_class(d.y) - ay, dz = mpq_class(d.z) - az;
+  mpq_class det = bx * (cy * dz - cz * dy) + by * (cz * dx - cx * dz) + bz * (cx * dy - cy * dx);
+  return sign_of(det);
+}
+
+void project(const Vec3 &p, int drop, double &u, double &v) {
+  if (drop == 0) {
+    u = p.y;
+    v = p.z;
+  } else if (drop == 1) {
+    u = p.z;
+    v = p.x;
+  } else {
+    u = p.x;
+    v = p.y;
+  }
+}
+
+int orient2d_exact(double au, double av, double bu, double bv, double cu, double cv) {
+  mpq_class l = (mpq_class(bu) - mpq_class(au)) * (mpq_class(cv) - mpq_class(av));
+  mpq_class r = (mpq_class(bv) - mpq_class(av)) * (mpq_class(cu) - mpq_class(au));
+  return sign_of(l - r);
+}
+
+// Coordinate to drop so that the projection of triangle abc keeps a non-zero area.
+int projection_axis(const Vec3 &a, const Vec3 &b, const Vec3 &c) {
+  Vec3 n = cross(b - a, c - a);
+  double ax = std::fabs(n.x), ay = std::fabs(n.y), az = std::fabs(n.z);
+  int order[3];
+  if (ax >= ay && ax >= az) {
+    order[0] = 0;
+    order[1] = ay >= az ? 1 : 2;
+    order[2] = 3 - order[1];
+  } else if (ay >= az) {
+    order[0] = 1;
+    order[1] = ax >= az ? 0 : 2;
+    order[2] = 2 - order[1];
+  } else {
+    order[0] = 2;
+    order[1] = ax >= ay ? 0 : 1;
+    order[2] = 1 - order[1];
+  }
+  for (int k = 0; k < 3; ++k)
+    if (orient2d(a, b, c, order[k]) != 0) return order[k];
+  return order[0];
+}
+
+// Closed point-in-triangle test in the projection that drops `drop`.
+bool point_in_triangle_2d(const Vec3 &p, const Vec3 &a, const Vec3 &b, const Vec3 &c, int drop) {
+  int s = orient2d(a, b, c, drop);
+  int s1 = orient2d(a, b, p, drop), s2 = orient2d(b, c, p, drop), s3 = orient2d(c, a, p, drop);
+  return (s1 == s || s1 == 0) && (s2 == s || s2 == 0) && (s3 == s || s3 == 0);
+}
+
+// For p collinear with segment ab (in the projection): does p lie between a and b?
+bool between_2d(const Vec3 &a, const Vec3 &b, const Vec3 &p, int drop) {
+  double au, av, bu, bv, pu, pv;
+  project(a, drop, au, av);
+  project(b, drop, bu, bv);
+  project(p, drop, pu, pv);
+  return std::min(au, bu) <= pu && pu <= std::max(au, bu) && std::min(av, bv) <= pv &&
+         pv <= std::max(av, bv);
+}
+
+// Do closed segments pq and ab meet (all four points coplanar, tested in the projection)?
+bool segments_meet_2d(const Vec3 &p, const Vec3 &q, const Vec3 &a, const Vec3 &b, int drop) {
+  int d1 = orient2d(p, q, a, drop), d2 = orient2d(p, q, b, drop);
+  int d3 = orient2d(a, b, p, drop), d4 = orient2d(a, b, q, drop);
+  if (d1 * d2 < 0 && d3 * d4 < 0) return true;
+  if (d1 == 0 && between_2d(p, q, a, drop)) return true;
+  if (d2 == 0 && between_2d(p, q, b, drop)) return true;
+  if (d3 == 0 && between_2d(a, b, p, drop)) return true;
+  if (d4 == 0 && between_2d(a, b, q, drop)) return true;
+  return false;
+}
+
+// Does the ray from v through x lie in the closed angular sector (v; c, d) of a coplanar
+// triangle v c d? (x is known to be coplanar with it.)
+bool ray_in_sector(const Vec3 &v, const Vec3 &c, const Vec3 &d, const Vec3 &x) {
+  int drop = projection_axis(v, c, d);
+  int s = orient2d(v, c, d, drop);
+  int o1 = orient2d(v, c, x, drop), o2 = orient2d(v, x, d, drop);
+  if (o1 == 0 && o2 == 0) return false;  // x coincides with v: not a direction
+  return (o1 == s || o1 == 0) && (o2 == s || o2 == 0);
+}
+
+}  // namespace
+
+int orient3d(const Vec3 &a, const Vec3 &b, const Vec3 &c, const Vec3 &d) {
+  double bx = b.x - a.x, by = b.y - a.y, bz = b.z - a.z;
+  double cx = c.x - a.x, cy = c.y - a.y, cz = c.z - a.z;
+  double dx = d.x - a.x, dy = d.y - a.y, dz = d.z - a.z;
+  double m1 = cy * dz, m2 = cz * dy, m3 = cz * dx, m4 = cx * dz, m5 = cx * dy, m6 = cy * dx;
+  double det = bx * (m1 - m2) + by * (m3 - m4) + bz * (m5 - m6);
+  double permanent = std::fabs(bx) * (std::fabs(m1) + std::fabs(m2)) +
+                     std::fabs(by) * (std::fabs(m3) + std::fabs(m4)) +
+                     std::fabs(bz) * (std::fabs(m5) + std::fabs(m6));
+  double bound = kOrient3dBound * permanent;
+  if (det > bound) return 1;
+  if (det < -bound) return -1;
+  if (permanent == 0) return 0;
+  return orient3d_exact(a, b, c, d);
+}
+
+int orient2d(const Vec3 &a, const Vec3 &b, const Vec3 &c, int drop) {
+  double au, av, bu, bv, cu, cv;
+  project(a, drop, au, av);
+  project(b, drop, bu, bv);
+  project(c, drop, cu, cv);
+  double l = (bu - au) * (cv - av), r = (bv - av) * (cu - au);
+  double det = l - r;
+  double bound = kOrient2dBound * (std::fabs(l) + std::fabs(r));
+  if (det > bound) return 1;
+  if (det < -bound) return -1;
+  if (l == 0 && r == 0) return 0;
+  return orient2d_exact(au, av, bu, bv, cu, cv);
+}
+
+bool collinear(const Vec3 &a, const Vec3 &b, const Vec3 &c) {
+  return orient2d(a, b, c, 0) == 0 && orient2d(a, b, c, 1) == 0 && orient2d(a, b, c, 2) == 0;
+}
+
+bool segment_meets_triangle(const Vec3 &p, const Vec3 &q, const Vec3 &a, const Vec3 &b,
+                            const Vec3 &c) {
+  int o1 = orient3d(a, b, c, p), o2 = orient3d(a, b, c, q);
+  if (o1 == o2 && o1 != 0) return false;
+  if (o1 == 0 && o2 == 0) {
+    int drop = projection_axis(a, b, c);
+    return point_in_triangle_2d(p, a, b, c, drop) || point_in_triangle_2d(q, a, b, c, drop) ||
+           segments_meet_2d(p, q, a, b, drop) || segments_meet_2d(p, q, b, c, drop) ||
+           segments_meet_2d(p, q, c, a, drop);
+  }
+  // The segment reaches the plane; where its line crosses it must lie in the closed triangle.
+  int s1 = orient3d(p, q, a, b), s2 = orient3d(p, q, b, c), s3 = orient3d(p, q, c, a);
+  return (s1 >= 0 && s2 >= 0 && s3 >= 0) || (s1 <= 0 && s2 <= 0 && s3 <= 0);
+}
+
+bool triangles_cross(const Vec3 t[3], const unsigned it[3], const Vec3 f[3], const unsigned jf[3]) {
+  // Which corners are shared: st[i] = corner of f equal to corner i of t, or -1.
+  int st[3] = {-1, -1, -1}, sf[3] = {-1, -1, -1}, shared = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (it[i] == jf[j]) {
+        st[i] = j;
+        sf[j] = i;
+        ++shared;
+      }
+  if (shared == 3) return true;
+  if (shared == 0) {
+    for (int i = 0; i < 3; ++i) {
+      if (segment_meets_triangle(t[i], t[(i + 1) % 3], f[0], f[1], f[2])) return true;
+      if (segment_meets_triangle(f[i], f[(i + 1) % 3], t[0], t[1], t[2])) return true;
+    }
+    return false;
+  }
+  if (shared == 2) {
+    int a = 0, b = 0;
+    while (st[a] >= 0) ++a;
+    while (sf[b] >= 0) ++b;
+    const Vec3 &u = t[(a + 1) % 3], &v = t[(a + 2) % 3];
+    if (orient3d(u, v, t[a], f[b]) != 0) return false;
+    int drop = projection_axis(u, v, t[a]);
+    return orient2d(u, v, t[a], drop) == orient2d(u, v, f[b], drop);  // folded onto each other
+  }
+  // One shared vertex v: t = (v, a, b), f = (v, c, d).
+  int i = 0, j = 0;
+  while (st[i] < 0) ++i;
+  j = st[i];
+  const Vec3 &v = t[i], &a = t[(i + 1) % 3], &b = t[(i + 2) % 3];
+  const Vec3 &c = f[(j + 1) % 3], &d = f[(j + 2) % 3];
+  if (segment_meets_triangle(a, b, v, c, d) || segment_meets_triangle(c, d, v, a, b)) return true;
+  // An edge leaving v that lies in the other triangle's plane and inside its corner at v.
+  if (orient3d(v, c, d, a) == 0 && ray_in_sector(v, c, d, a)) return true;
+  if (orient3d(v, c, d, b) == 0 && ray_in_sector(v, c, d, b)) return true;
+  if (orient3d(v, a, b, c) == 0 && ray_in_sector(v, a, b, c)) return true;
+  if (orient3d(v, a, b, d) == 0 && ray_in_sector(v, a, b, d)) return true;
+  return false;
+}
+
+}  // namespace moa

@@ -1,0 +1,105 @@
+// The driver: the stages of the reconstruction in order, each timed and reporting progress.
+#include "core/reconstruct.hpp"
+
+#include <tbb/global_control.h>
+#include <tbb/info.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "core/finish.hpp"
+#include "core/growth_state.hpp"
+#include "core/neighbors.hpp"
+#include "core/point_set.hpp"
+
+namespace moa {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+}
+
+// Median point spacing: the cell size of the crossing index's grid of recent faces.
+double median_spacing(const Neighborhood &nb) {
+  std::vector<float> s(nb.spacing);
+  std::nth_element(s.begin(), s.begin() + s.size() / 2, s.end());
+  return std::max(1e-9, double(s[s.size() / 2]));
+}
+
+Result run_stages(const double *xyz, std::size_t count, const Params &params,
+                  const ProgressFn &progress) {
+  Result result;
+  moa_stats &st = result.stats;
+  auto report = [&](moa_stage stage, double fraction) {
+    if (progress && progress(stage, std::clamp(fraction, 0.0, 1.0))) throw Cancelled();
+  };
+  auto total = Clock::now();
+
+  auto t = Clock::now();
+  report(MOA_STAGE_POINTS, 0.0);
+  PointSet points = prepare_points(xyz, count);
+  st.input_points = count;
+  st.unique_points = points.size();
+  st.duplicate_points = points.duplicates;
+  report(MOA_STAGE_POINTS, 1.0);
+  st.stage_ms[MOA_STAGE_POINTS] = ms_since(t);
+
+  t = Clock::now();
+  report(MOA_STAGE_NEIGHBORS, 0.0);
+  Neighborhood nb = compute_neighbors(points, unsigned(params.neighbors),
+                                      [&](double f) { report(MOA_STAGE_NEIGHBORS, f); });
+  st.stage_ms[MOA_STAGE_NEIGHBORS] = ms_since(t);
+
+  GrowthState g(points, nb, params, 2.0 * median_spacing(nb), st);
+
+  t = Clock::now();
+  report(MOA_STAGE_MESH, 0.0);
+  build_mesh(g, [&](double f) { report(MOA_STAGE_MESH, f); });
+  st.stage_ms[MOA_STAGE_MESH] = ms_since(t);
+
+  t = Clock::now();
+  report(MOA_STAGE_LOOPS, 0.0);
+  fill_loops(g, [&](double f) { report(MOA_STAGE_LOOPS, f); });
+  st.stage_ms[MOA_STAGE_LOOPS] = ms_since(t);
+
+  t = Clock::now();
+  report(MOA_STAGE_FINISH, 0.0);
+  std::vector<Tri> faces = finish_mesh(g);
+  result.triangles.resize(faces.size() * 3);
+  std::vector<char> used(points.size(), 0);
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      used[faces[f][k]] = 1;
+      result.triangles[3 * f + k] = points.original[faces[f][k]];
+    }
+  st.triangles = faces.size();
+  st.used_points = std::size_t(std::count(used.begin(), used.end(), 1));
+  st.unused_points = points.size() - st.used_points;
+  st.embree_rebuilds = g.crossings.rebuilds();
+  st.intersection_ms = g.crossings.milliseconds();
+  report(MOA_STAGE_FINISH, 1.0);
+  st.stage_ms[MOA_STAGE_FINISH] = ms_since(t);
+  st.total_ms = ms_since(total);
+  return result;
+}
+
+}  // namespace
+
+Result reconstruct(const double *xyz, std::size_t count, const Params &params,
+                   const ProgressFn &progress) {
+  if (count > 0 && !xyz) throw Error(MOA_ERROR_INVALID_ARGUMENT, "points are NULL");
+  int threads = int(params.threads);
+  if (threads <= 0) threads = tbb::info::default_concurrency();
+  // An arena per run: two contexts with different thread counts can run at once.
+  tbb::task_arena arena(threads);
+  Result result;
+  arena.execute([&] { result = run_stages(xyz, count, params, progress); });
+  result.stats.threads = unsigned(threads);
+  return result;
+}
+
+}  // namespace moa

@@ -1,0 +1,63 @@
+// The topology judgment of paper §3.4: a candidate triangle is accepted only when
+//   - it is not degenerate (exactly collinear corners, or a needle),
+//   - the mesh stays edge- and vertex-manifold and orientable (MeshState::check),
+//   - its plane agrees with the local reference planes of its corners,
+//   - no triangle sharing one of its edges folds onto it (angle alpha, Fig. 8 (2)),
+//   - no triangle sharing only a vertex duplicates its fan (angles alpha, beta, gamma, Fig. 8 (1)),
+//   - the function T is small for every point in its sphere (Fig. 7),
+//   - it crosses no existing triangle (Type 1, decided exactly; CrossingIndex).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "core/intersection.hpp"
+#include "core/mesh_state.hpp"
+#include "core/neighbors.hpp"
+#include "core/parameters.hpp"
+#include "core/point_set.hpp"
+#include "moa/moa.h"
+
+namespace moa {
+
+enum class Verdict {
+  Accept,
+  Degenerate,
+  Manifold,
+  Orientation,
+  Flatness,
+  EdgeFold,
+  VertexFold,
+  Intersection
+};
+
+class TopologyJudge {
+ public:
+  TopologyJudge(const PointSet &points, const Neighborhood &nb, const Params &params,
+                MeshState &mesh, CrossingIndex &crossings);
+
+  // Judges oriented triangle t. `sphere` lists the points inside the candidate sphere, the
+  // population the function T is evaluated over; pass count 0 to skip T. `relaxed` skips the
+  // local-plane tests (T and the normal deviation), as the loop module does on its last pass;
+  // the manifold, orientation, fold and crossing tests always run.
+  Verdict judge(const Tri &t, const uint32_t *sphere, std::size_t count, bool relaxed = false);
+  // Records a verdict in the run statistics.
+  static void count(Verdict v, moa_stats &stats);
+
+ private:
+  bool degenerate(const Tri &t) const;
+  bool normal_deviates(const Tri &t) const;
+  bool edge_folds(const Tri &t) const;
+  bool vertex_folds(const Tri &t) const;
+  bool faces_backwards(const Tri &t) const;
+  bool flatness_fails(const Tri &t, const uint32_t *sphere, std::size_t count) const;
+
+  const PointSet &points_;
+  const Neighborhood &nb_;
+  MeshState &mesh_;
+  CrossingIndex &crossings_;
+  double flatness_a_, flatness_c_;
+  double cos_edge_fold_, vertex_fold_, vertex_open_, cos_normal_;
+};
+
+}  // namespace moa
