@@ -127,6 +127,54 @@ bool CrossingIndex::test_exact(const Tri &t, uint32_t f, MeshState &mesh) {
   return triangles_cross(tp, ti, gp, gi);
 }
 
+void CrossingIndex::next_query(MeshState &mesh) {
+  if (stamp_.size() < mesh.face_count()) stamp_.resize(mesh.face_count() * 2 + 64, 0);
+  if (++query_ == 0) {
+    std::fill(stamp_.begin(), stamp_.end(), 0);
+    query_ = 1;
+  }
+}
+
+template <class Visit>
+bool CrossingIndex::visit_near(const Vec3 &lo, const Vec3 &hi, MeshState &mesh, Visit &&visit) {
+  // Committed faces: an Embree point query over the box's circumscribed sphere.
+  if (scene_ && committed_ > 0) {
+    found_.clear();
+    Vec3 c = midpoint(lo, hi);
+    RTCPointQuery pq;
+    pq.x = float(c.x);
+    pq.y = float(c.y);
+    pq.z = float(c.z);
+    pq.time = 0.f;
+    pq.radius = float(norm(hi - lo) * 0.5 + kPad);
+    RTCPointQueryContext pctx;
+    rtcInitPointQueryContext(&pctx);
+    rtcPointQuery(static_cast<RTCScene>(scene_), &pq, &pctx, collect_point_query, &found_);
+    for (uint32_t f : found_)
+      if (visit(f)) return true;
+  }
+  // Pending faces: the grid cells the box touches.
+  int64_t x0 = int64_t(std::floor(lo.x / cell_)), x1 = int64_t(std::floor(hi.x / cell_));
+  int64_t y0 = int64_t(std::floor(lo.y / cell_)), y1 = int64_t(std::floor(hi.y / cell_));
+  int64_t z0 = int64_t(std::floor(lo.z / cell_)), z1 = int64_t(std::floor(hi.z / cell_));
+  if ((x1 - x0 + 1) * (y1 - y0 + 1) * (z1 - z0 + 1) > kMaxCellsPerFace) {
+    for (uint32_t f = committed_; f < mesh.face_count(); ++f)
+      if (visit(f)) return true;
+    return false;
+  }
+  for (int64_t x = x0; x <= x1; ++x)
+    for (int64_t y = y0; y <= y1; ++y)
+      for (int64_t z = z0; z <= z1; ++z) {
+        auto it = grid_.find(cell_key(x, y, z));
+        if (it == grid_.end()) continue;
+        for (uint32_t f : it->second)
+          if (visit(f)) return true;
+      }
+  for (uint32_t f : oversized_)
+    if (visit(f)) return true;
+  return false;
+}
+
 bool CrossingIndex::crosses(const Tri &t, MeshState &mesh) {
   auto start = std::chrono::steady_clock::now();
   struct Timer {
@@ -135,18 +183,13 @@ bool CrossingIndex::crosses(const Tri &t, MeshState &mesh) {
     ~Timer() { acc += std::chrono::duration<double>(std::chrono::steady_clock::now() - s).count(); }
   } timer{start, seconds_};
 
-  if (stamp_.size() < mesh.face_count()) stamp_.resize(mesh.face_count() * 2 + 64, 0);
-  if (++query_ == 0) {
-    std::fill(stamp_.begin(), stamp_.end(), 0);
-    query_ = 1;
-  }
+  next_query(mesh);
   // Faces sharing a vertex: the common case, decided exactly without any index.
   for (uint32_t v : t)
     for (uint32_t f : mesh.faces_at(v))
       if (test_exact(t, f, mesh)) return true;
 
-  // Committed faces: rays along the three edges first, then a point query for faces whose
-  // own edges could pierce t.
+  // Committed faces: rays along the three edges first; they find the usual crossing quickly.
   if (scene_ && committed_ > 0) {
     auto scene = static_cast<RTCScene>(scene_);
     found_.clear();
@@ -173,46 +216,29 @@ bool CrossingIndex::crosses(const Tri &t, MeshState &mesh) {
     }
     for (uint32_t f : found_)
       if (test_exact(t, f, mesh)) return true;
-
-    found_.clear();
-    Vec3 lo, hi;
-    bounds(t, lo, hi);
-    Vec3 c = midpoint(lo, hi);
-    RTCPointQuery pq;
-    pq.x = float(c.x);
-    pq.y = float(c.y);
-    pq.z = float(c.z);
-    pq.time = 0.f;
-    pq.radius = float(norm(hi - lo) * 0.5 + kPad);
-    RTCPointQueryContext pctx;
-    rtcInitPointQueryContext(&pctx);
-    rtcPointQuery(scene, &pq, &pctx, collect_point_query, &found_);
-    for (uint32_t f : found_)
-      if (test_exact(t, f, mesh)) return true;
   }
-
-  // Pending faces in the grid.
+  // Then every face near t: faces whose own edges could pierce it, and the pending ones.
   Vec3 lo, hi;
   bounds(t, lo, hi);
-  int64_t x0 = int64_t(std::floor(lo.x / cell_)), x1 = int64_t(std::floor(hi.x / cell_));
-  int64_t y0 = int64_t(std::floor(lo.y / cell_)), y1 = int64_t(std::floor(hi.y / cell_));
-  int64_t z0 = int64_t(std::floor(lo.z / cell_)), z1 = int64_t(std::floor(hi.z / cell_));
-  if ((x1 - x0 + 1) * (y1 - y0 + 1) * (z1 - z0 + 1) > kMaxCellsPerFace) {
-    for (uint32_t f = committed_; f < mesh.face_count(); ++f)
-      if (test_exact(t, f, mesh)) return true;
+  return visit_near(lo, hi, mesh, [&](uint32_t f) { return test_exact(t, f, mesh); });
+}
+
+void CrossingIndex::gather(const Tri &t, double pad, MeshState &mesh, std::vector<uint32_t> &out) {
+  next_query(mesh);
+  out.clear();
+  auto take = [&](uint32_t f) {
+    if (stamp_[f] != query_ && mesh.alive(f)) {
+      stamp_[f] = query_;
+      out.push_back(f);
+    }
     return false;
-  }
-  for (int64_t x = x0; x <= x1; ++x)
-    for (int64_t y = y0; y <= y1; ++y)
-      for (int64_t z = z0; z <= z1; ++z) {
-        auto it = grid_.find(cell_key(x, y, z));
-        if (it == grid_.end()) continue;
-        for (uint32_t f : it->second)
-          if (test_exact(t, f, mesh)) return true;
-      }
-  for (uint32_t f : oversized_)
-    if (test_exact(t, f, mesh)) return true;
-  return false;
+  };
+  for (uint32_t v : t)
+    for (uint32_t f : mesh.faces_at(v)) take(f);
+  Vec3 lo, hi;
+  bounds(t, lo, hi);
+  Vec3 p{pad, pad, pad};
+  visit_near(lo - p, hi + p, mesh, take);
 }
 
 std::size_t CrossingIndex::memory_bytes() const {

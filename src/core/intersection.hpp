@@ -26,6 +26,9 @@ class CrossingIndex {
   // True when triangle t would meet an existing face anywhere other than in shared vertices
   // and edges.
   bool crosses(const Tri &t, MeshState &mesh);
+  // Faces whose bounding boxes come within `pad` (work units) of t's: the neighbourhood the
+  // judgment searches for overlapping layers. Faces sharing a vertex with t are included.
+  void gather(const Tri &t, double pad, MeshState &mesh, std::vector<uint32_t> &out);
   // Registers face f (already added to mesh).
   void face_added(uint32_t f, MeshState &mesh);
 
@@ -38,6 +41,10 @@ class CrossingIndex {
   void grid_insert(uint32_t f, const Tri &t);
   bool test_exact(const Tri &t, uint32_t f, MeshState &mesh);
   void bounds(const Tri &t, Vec3 &lo, Vec3 &hi) const;
+  void next_query(MeshState &mesh);
+  // Calls visit(face) for committed faces near the sphere and pending faces near the box.
+  template <class Visit>
+  bool visit_near(const Vec3 &lo, const Vec3 &hi, MeshState &mesh, Visit &&visit);
 
   const PointSet &points_;
   std::vector<float> vertices_;  // work coordinates, Embree's shared vertex buffer

@@ -227,13 +227,36 @@ class LoopFiller {
     pool.insert(pool.end(), other.begin(), other.end());
   }
 
+  // Would t take a boundary edge of another loop as its own? That merges the two loops
+  // through the surface: a handle when both belong to one component.
+  bool joins_another_loop(const Tri &t, uint32_t loop_id) const {
+    for (int i = 1; i < 3; ++i) {
+      uint32_t a = t[i], b = t[(i + 1) % 3];
+      auto it = hole_loop_.find(key(a, b));
+      if (it != hole_loop_.end() && it->second != loop_id) return true;
+    }
+    return false;
+  }
+
   bool try_candidates(uint32_t u, uint32_t v, uint32_t z, Vec3 side,
                       const std::vector<uint32_t> &pool, uint32_t loop_id, bool relaxed) {
     const auto &w = g_.points.work;
     Vec3 m = midpoint(w[u], w[v]);
+    // A loop of another component may be joined (an island inside a hole); joining another
+    // loop of the same component would open a handle through the surface.
+    const bool other_loops = &pool == &loops_[loop_id].outer;
+    uint32_t own = kNone;
+    if (other_loops) {
+      uint32_t fs[2];
+      g_.mesh.edge_faces(u, v, fs);
+      own = g_.mesh.component(fs[0]);
+    }
     near_.clear();
-    for (uint32_t c : pool)
-      if (c != u && c != v && c != z) near_.push_back(c);
+    for (uint32_t c : pool) {
+      if (c == u || c == v || c == z) continue;
+      if (other_loops && g_.mesh.component(g_.mesh.faces_at(c)[0]) == own) continue;
+      near_.push_back(c);
+    }
     if (near_.size() > kMaxLoopCandidates) {
       std::nth_element(near_.begin(), near_.begin() + kMaxLoopCandidates, near_.end(),
                        [&](uint32_t a, uint32_t b) {
@@ -245,12 +268,13 @@ class LoopFiller {
     g_.search.rank(u, v, near_, side, z, ranked_);
     for (const Candidate &c : ranked_) {
       Tri t{u, v, c.vertex};
+      if (joins_another_loop(t, loop_id)) continue;
       Verdict verdict = g_.judge.judge(t, sphere_.data(), relaxed ? 0 : sphere_.size(), relaxed);
       TopologyJudge::count(verdict, g_.stats);
       if (verdict != Verdict::Accept) continue;
       g_.add_face(t);
       ++g_.stats.triangles_loops;
-      if (&pool == &loops_[loop_id].outer) merge_loop_of(c.vertex, loop_id);
+      if (other_loops) merge_loop_of(c.vertex, loop_id);
       // New hole edges belong to the same loop (or to the pieces it splits into).
       for (int i = 0; i < 3; ++i) {
         uint32_t a = t[i], b = t[(i + 1) % 3], gs[2];

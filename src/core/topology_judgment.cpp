@@ -1,6 +1,7 @@
 // Topology judgment (paper §3.4). Cheap tests run first; the exact crossing test runs last.
 #include "core/topology_judgment.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/predicates.hpp"
@@ -15,6 +16,46 @@ const double kMaxCornerAngle = degrees_to_radians(175.0);
 // A triangle whose normal is more than about 100 degrees from the mean normal of a fan it
 // joins faces backwards.
 constexpr double kBackwardsCosine = -0.17;
+
+// A point that projects into a triangle from closer than this fraction of its mean edge lies
+// on the same sheet: the triangle would cover it, and the surface there would be two-layered.
+constexpr double kCoverHeight = 0.2;
+
+bool covers(const Vec3 &a, const Vec3 &b, const Vec3 &c, const Vec3 &n, const Vec3 &p,
+            double height, double mean_edge) {
+  if (height >= kCoverHeight * mean_edge) return false;
+  // Inside test by the signs of the sub-triangle normals along n.
+  return dot(cross(b - a, p - a), n) > 0 && dot(cross(c - b, p - b), n) > 0 &&
+         dot(cross(a - c, p - c), n) > 0;
+}
+
+// Layers: faces overlapping t in projection are a second layer when closer to t's plane than
+// this many mean edge lengths (facing the same way within one component) or than the other.
+constexpr double kSameFacingLayer = 1.0;
+constexpr double kAnyLayer = 0.3;
+// Triangles are shrunk this much toward their centres before the overlap test, so that
+// touching along shared vertices does not count.
+constexpr double kShrink = 0.98;
+
+// Do two 2-D triangles overlap? Separating axis test over the six edge normals.
+bool triangles_overlap_2d(const double (&p)[3][2], const double (&q)[3][2]) {
+  const double(*tri[2])[2] = {p, q};
+  for (int k = 0; k < 2; ++k)
+    for (int i = 0; i < 3; ++i) {
+      const double *u = tri[k][i], *v = tri[k][(i + 1) % 3];
+      double ax = v[1] - u[1], ay = u[0] - v[0];
+      double pmin = 1e300, pmax = -1e300, qmin = 1e300, qmax = -1e300;
+      for (int j = 0; j < 3; ++j) {
+        double dp = p[j][0] * ax + p[j][1] * ay, dq = q[j][0] * ax + q[j][1] * ay;
+        pmin = std::min(pmin, dp);
+        pmax = std::max(pmax, dp);
+        qmin = std::min(qmin, dq);
+        qmax = std::max(qmax, dq);
+      }
+      if (pmax <= qmin || qmax <= pmin) return false;
+    }
+  return true;
+}
 
 uint32_t third_vertex(const Tri &t, uint32_t u, uint32_t v) {
   for (uint32_t x : t)
@@ -98,37 +139,84 @@ bool TopologyJudge::vertex_folds(const Tri &t) const {
   return false;
 }
 
-bool TopologyJudge::faces_backwards(const Tri &t) const {
-  // Where t joins faces whose orientation is tied to its own (a component it shares an edge
-  // with), its normal must agree with theirs at each corner: a triangle whose normal turns
-  // against the fan it joins wraps around to the far side of a thin part.
-  uint32_t roots[3];
-  double sign[3];
-  int linked = 0;
+TopologyJudge::Frame TopologyJudge::frame_of(const Tri &t) const {
+  Frame fr;
   for (int i = 0; i < 3; ++i) {
     uint32_t u = t[i], v = t[(i + 1) % 3], fs[2];
     if (mesh_.edge_faces(u, v, fs) != 1) continue;
     Tri g = mesh_.oriented(fs[0]);
     bool same_direction = false;  // t and g both run u->v: g's class is flipped relative to t
     for (int k = 0; k < 3; ++k) same_direction |= (g[k] == u && g[(k + 1) % 3] == v);
-    roots[linked] = mesh_.component(fs[0]);
-    sign[linked++] = same_direction ? -1.0 : 1.0;
+    fr.roots[fr.linked] = mesh_.component(fs[0]);
+    fr.sign[fr.linked++] = same_direction ? -1.0 : 1.0;
   }
-  if (linked == 0) return false;
+  return fr;
+}
+
+bool TopologyJudge::faces_backwards(const Tri &t, const Frame &frame) const {
+  // Where t joins faces whose orientation is tied to its own (a component it shares an edge
+  // with), its normal must agree with theirs at each corner: a triangle whose normal turns
+  // against the fan it joins wraps around to the far side of a thin part.
+  if (frame.linked == 0) return false;
   const auto &w = points_.work;
   Vec3 nt = normalized(cross(w[t[1]] - w[t[0]], w[t[2]] - w[t[0]]));
   for (uint32_t v : t) {
     Vec3 sum{};
     for (uint32_t f : mesh_.faces_at(v)) {
-      uint32_t root = mesh_.component(f);
-      for (int k = 0; k < linked; ++k) {
-        if (roots[k] != root) continue;
-        Tri g = mesh_.oriented(f);
-        sum = sum + normalized(cross(w[g[1]] - w[g[0]], w[g[2]] - w[g[0]])) * sign[k];
-        break;
-      }
+      double s = frame.sign_of(mesh_.component(f));
+      if (s == 0) continue;
+      Tri g = mesh_.oriented(f);
+      sum = sum + normalized(cross(w[g[1]] - w[g[0]], w[g[2]] - w[g[0]])) * s;
     }
     if (norm2(sum) > 0 && dot(nt, normalized(sum)) < kBackwardsCosine) return true;
+  }
+  return false;
+}
+
+bool TopologyJudge::overlaps_layer(const Tri &t, const Frame &frame) const {
+  // Two triangles that overlap when projected onto t's plane, lying close to it and facing
+  // the same way, make a two-layered surface even when they do not intersect (a large
+  // triangle under small ones): the duplicated structure of paper Fig. 6 (2).
+  const auto &w = points_.work;
+  const Vec3 &a = w[t[0]], &b = w[t[1]], &c = w[t[2]];
+  Vec3 n = normalized(cross(b - a, c - a));
+  double bl = (dist(a, b) + dist(b, c) + dist(c, a)) / 3.0;
+  crossings_.gather(t, bl, mesh_, near_);
+  Vec3 e1 = normalized(b - a), e2 = cross(n, e1);
+  auto project = [&](const Vec3 &p, const Vec3 &centre, double(&out)[2]) {
+    Vec3 q = centre + (p - centre) * kShrink - a;
+    out[0] = dot(q, e1);
+    out[1] = dot(q, e2);
+  };
+  double tp[3][2];
+  Vec3 ct = centroid(a, b, c);
+  for (int i = 0; i < 3; ++i) project(w[t[i]], ct, tp[i]);
+  for (uint32_t f : near_) {
+    const Tri &g = mesh_.stored(f);
+    int shared = 0;
+    for (uint32_t x : g) shared += (x == t[0] || x == t[1] || x == t[2]);
+    if (shared >= 2) continue;  // sharing an edge: the edge-fold angle decides
+    const Vec3 &ga = w[g[0]], &gb = w[g[1]], &gc = w[g[2]];
+    Vec3 ng = normalized(cross(gb - ga, gc - ga));
+    double facing = dot(ng, n);
+    if (std::fabs(facing) < 0.5) continue;  // not a parallel layer
+    double s = frame.sign_of(mesh_.component(f));
+    if (s != 0) {
+      // Same orientation class: compare with the face as oriented.
+      Tri go = mesh_.oriented(f);
+      facing = go == g ? facing : -facing;
+      facing *= s;
+    }
+    double limit = (s != 0 && facing > 0) ? kSameFacingLayer * bl : kAnyLayer * bl;
+    double h =
+        std::max({std::fabs(dot(ga - a, n)), std::fabs(dot(gb - a, n)), std::fabs(dot(gc - a, n))});
+    if (h > limit) continue;
+    double gp[3][2];
+    Vec3 cg = centroid(ga, gb, gc);
+    project(ga, cg, gp[0]);
+    project(gb, cg, gp[1]);
+    project(gc, cg, gp[2]);
+    if (triangles_overlap_2d(tp, gp)) return true;
   }
   return false;
 }
@@ -146,6 +234,7 @@ bool TopologyJudge::flatness_fails(const Tri &t, const uint32_t *sphere, std::si
     Vec3 dp = points_.work[p] - D;
     double pi = std::fabs(dot(dp, n));
     double di = norm(dp - n * dot(dp, n));
+    if (covers(a, b, c, n, dp + D, pi, bl)) return true;
     // A point straight above or below the triangle is another sheet of a thin part (the
     // paper's thin slabs), not a fold beside it: the crossing test keeps the sheets apart.
     if (di < 0.5 * bl) continue;
@@ -168,9 +257,11 @@ Verdict TopologyJudge::judge(const Tri &t, const uint32_t *sphere, std::size_t c
   }
   if (!relaxed && normal_deviates(t)) return Verdict::Flatness;
   if (edge_folds(t)) return Verdict::EdgeFold;
-  if (vertex_folds(t) || faces_backwards(t)) return Verdict::VertexFold;
+  Frame frame = frame_of(t);
+  if (vertex_folds(t) || faces_backwards(t, frame)) return Verdict::VertexFold;
   if (!relaxed && count > 0 && flatness_fails(t, sphere, count)) return Verdict::Flatness;
   if (crossings_.crosses(t, mesh_)) return Verdict::Intersection;
+  if (overlaps_layer(t, frame)) return Verdict::VertexFold;
   return Verdict::Accept;
 }
 

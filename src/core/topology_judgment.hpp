@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "core/intersection.hpp"
 #include "core/mesh_state.hpp"
@@ -49,7 +50,21 @@ class TopologyJudge {
   bool normal_deviates(const Tri &t) const;
   bool edge_folds(const Tri &t) const;
   bool vertex_folds(const Tri &t) const;
-  bool faces_backwards(const Tri &t) const;
+  // The components t will be joined to through its edges, and whether each one's orientation
+  // is flipped relative to t (sign -1) or not (+1).
+  struct Frame {
+    uint32_t roots[3];
+    double sign[3];
+    int linked = 0;
+    double sign_of(uint32_t root) const {
+      for (int k = 0; k < linked; ++k)
+        if (roots[k] == root) return sign[k];
+      return 0;
+    }
+  };
+  Frame frame_of(const Tri &t) const;
+  bool faces_backwards(const Tri &t, const Frame &frame) const;
+  bool overlaps_layer(const Tri &t, const Frame &frame) const;
   bool flatness_fails(const Tri &t, const uint32_t *sphere, std::size_t count) const;
 
   const PointSet &points_;
@@ -58,6 +73,7 @@ class TopologyJudge {
   CrossingIndex &crossings_;
   double flatness_a_, flatness_c_;
   double cos_edge_fold_, vertex_fold_, vertex_open_, cos_normal_;
+  mutable std::vector<uint32_t> near_;
 };
 
 }  // namespace moa
