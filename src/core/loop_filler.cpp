@@ -6,6 +6,7 @@
 // next to a loop join its candidates, so the filling takes them in.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <queue>
 #include <unordered_map>
 #include <vector>
@@ -36,7 +37,10 @@ struct HoleEdge {
 
 // Largest number of loop vertices ranked for one segment: the nearest ones to its midpoint.
 constexpr std::size_t kMaxLoopCandidates = 48;
-constexpr int kPasses = 4;  // the last two relax the local-plane tests
+constexpr int kPasses = 4;
+// Loops longer than this are borders unless the solid setting closes everything: measuring
+// their width costs a quadratic number of distances.
+constexpr std::size_t kMaxMeasuredLoop = 4096;  // the last two relax the local-plane tests
 
 class LoopFiller {
  public:
@@ -45,6 +49,21 @@ class LoopFiller {
   std::size_t count_loops() {
     collect_hole_edges();
     return trace_loops().size();
+  }
+
+  // Removes the faces along every hole that stayed open although it was small enough to
+  // close. Returns the number of faces removed.
+  std::size_t widen_open_holes() {
+    std::vector<uint32_t> ring;
+    for (const auto &kv : hole_loop_) {
+      if (!loops_[kv.second].fillable) continue;
+      uint32_t from = uint32_t(kv.first >> 32), to = uint32_t(kv.first), fs[2];
+      if (g_.mesh.edge_faces(from, to, fs) == 1) ring.push_back(fs[0]);
+    }
+    std::sort(ring.begin(), ring.end());
+    ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+    for (uint32_t f : ring) g_.mesh.remove(f);
+    return ring.size();
   }
 
   void run(const std::function<void(double)> &tick) {
@@ -129,22 +148,41 @@ class LoopFiller {
     return loops;
   }
 
+  // How wide a loop is: for each vertex, the distance to the nearest vertex at least a quarter
+  // of the loop away; the largest of these. A gap left between growing fronts is narrow
+  // however long it is; a true border (the rim of an open scan) is as wide as the surface.
+  double loop_width(const std::vector<uint32_t> &loop) const {
+    const auto &w = g_.points.work;
+    const std::size_t n = loop.size();
+    if (n <= 3) return 0;
+    if (n > kMaxMeasuredLoop) return std::numeric_limits<double>::infinity();
+    const std::size_t quarter = std::max<std::size_t>(1, n / 4);
+    double width = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      double nearest = std::numeric_limits<double>::infinity();
+      for (std::size_t k = quarter; k <= n - quarter; ++k)
+        nearest = std::min(nearest, norm2(w[loop[i]] - w[loop[(i + k) % n]]));
+      width = std::max(width, nearest);
+    }
+    return std::sqrt(width);
+  }
+
   void classify_and_pool() {
     const auto &w = g_.points.work;
     std::unordered_map<uint32_t, uint32_t> &loop_of_vertex = loop_of_vertex_;
     for (uint32_t l = 0; l < loops_.size(); ++l) {
       Loop &loop = loops_[l];
-      double perimeter = 0, spacing = 0;
+      double spacing = 0;
       const std::size_t n = loop.vertices.size();
       for (std::size_t i = 0; i < n; ++i) {
         uint32_t a = loop.vertices[i], b = loop.vertices[(i + 1) % n];
-        perimeter += dist(w[a], w[b]);
         spacing += g_.nb.spacing[a];
         hole_loop_[key(a, b)] = l;
         loop_of_vertex.emplace(a, l);
       }
       spacing /= double(n);
-      loop.fillable = g_.params.solid != 0 || perimeter <= g_.params.hole_size * spacing;
+      double width = loop_width(loop.vertices);
+      loop.fillable = g_.params.solid != 0 || width <= g_.params.hole_size * spacing;
     }
     // Candidates of a loop: its own vertices, and the neighbours of its vertices that lie on
     // another loop (the outer loop around an island, Fig. 9 (2), whose lists the paper
@@ -340,12 +378,15 @@ std::size_t open_pinched_vertices(GrowthState &g) {
 }  // namespace
 
 void fill_loops(GrowthState &g, const std::function<void(double)> &tick) {
-  // Fill, then open the pinches that filling could not resolve and fill again.
-  constexpr int kRounds = 3;
+  // Fill; then open the pinches that filling could not resolve, widen the holes that could
+  // not be closed by the faces along them (a bad neighbourhood often blocks the last
+  // triangles), and fill again.
+  constexpr int kRounds = 4;
   for (int round = 0; round < kRounds; ++round) {
     LoopFiller filler(g);
     filler.run([&](double f) { tick((round + f) / kRounds); });
-    std::size_t removed = open_pinched_vertices(g);
+    if (round + 1 == kRounds) break;
+    std::size_t removed = open_pinched_vertices(g) + filler.widen_open_holes();
     g.stats.triangles_removed += removed;
     if (removed == 0) break;
   }

@@ -19,7 +19,7 @@ struct Params {
   double vertex_fold_angle = 15;     // vertex alpha below which beta/gamma are examined
   double vertex_open_angle = 120;    // beta and gamma above which a vertex pair is a fold
   double max_normal_deviation = 75;  // triangle normal vs local plane normal
-  double hole_size = 30;             // largest hole the loop module closes: perimeter / spacing
+  double hole_size = 5;              // widest hole the loop module closes, in units of spacing
   double solid = 0;                  // 1: close every hole regardless of size
   double take_in_points = 1;         // 1: insert left-out points in the loop/finish stages
 };
