@@ -168,7 +168,6 @@ class LoopFiller {
   }
 
   void classify_and_pool() {
-    const auto &w = g_.points.work;
     std::unordered_map<uint32_t, uint32_t> &loop_of_vertex = loop_of_vertex_;
     for (uint32_t l = 0; l < loops_.size(); ++l) {
       Loop &loop = loops_[l];

@@ -1,0 +1,64 @@
+// Shared pieces of the core property tests: run moa::reconstruct on a generated input, check the
+// result once with the independent checker, and turn each property into a pass/fail message.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/reconstruct.hpp"
+#include "support/contract_checker.hpp"
+#include "support/shapes.hpp"
+
+namespace moa::test {
+
+struct Run {
+  std::vector<std::uint32_t> triangles;
+  moa_stats stats{};
+  std::string error;  // what reconstruct threw, if it threw
+  double seconds = 0;
+};
+
+// Default parameters except the thread count.
+Run run_reconstruct(const Points &points, unsigned threads);
+
+// One input and its first run (2 threads), checked once.
+struct Case {
+  std::string name;
+  Points points;
+  std::size_t duplicates = 0;  // exact duplicate points planted in the input
+  Run run;
+  ContractReport report;
+};
+Case make_case(const std::string &name, Points points, std::size_t duplicates = 0);
+
+// Each returns "" when the property holds, else a message for the failure report.
+std::string contract_failure(const Case &c);         // C1-C5
+std::string stats_failure(const Case &c);            // moa_stats agrees with the result
+std::string determinism_failure(const Case &c);      // C6: again with 2 threads, then with 1
+std::string closed_failure(const Case &c, long genus);  // closed, one component, genus, all points
+std::string disk_failure(const Case &c);             // one disk using every point
+
+}  // namespace moa::test
+
+// Fails the running cmocka test with the message, if there is one. The message lives in a
+// static so nothing is leaked when cmocka jumps out of the test.
+#define MOA_EXPECT(message_expr)                                  \
+  do {                                                            \
+    static std::string moa_message_;                              \
+    moa_message_ = (message_expr);                                \
+    if (!moa_message_.empty()) fail_msg("%s", moa_message_.c_str()); \
+  } while (0)
+
+// The three properties every input must have, as cmocka tests named test_<shape>_<property>;
+// <shape>_case() must return the shape's const Case&.
+#define MOA_CONTRACT_TESTS(shape)                                                           \
+  static void test_##shape##_contract(void **) { MOA_EXPECT(moa::test::contract_failure(shape##_case())); } \
+  static void test_##shape##_stats(void **) { MOA_EXPECT(moa::test::stats_failure(shape##_case())); }       \
+  static void test_##shape##_deterministic(void **) {                                       \
+    MOA_EXPECT(moa::test::determinism_failure(shape##_case()));                             \
+  }
+#define MOA_CONTRACT_ENTRIES(shape)                                              \
+  cmocka_unit_test(test_##shape##_contract), cmocka_unit_test(test_##shape##_stats), \
+      cmocka_unit_test(test_##shape##_deterministic)

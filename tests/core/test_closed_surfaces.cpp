@@ -1,0 +1,94 @@
+// Property tests on well-sampled closed surfaces: the contract (C1-C6), consistent stats, and a
+// closed result of the true genus that uses every point.
+#include "core_harness.hpp"
+
+// cmocka last: its macros (fail, ...) clash with names in the standard headers.
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+extern "C" {  // this cmocka's header has no C++ guard of its own
+#include <cmocka.h>
+}
+
+using namespace moa::test;
+
+namespace {
+
+Points shuffled(Points p, std::uint64_t seed) {
+  shuffle(p, seed);
+  return p;
+}
+
+const Case &fibonacci_sphere_case() {
+  static const Case c = make_case("Fibonacci sphere", shuffled(fibonacci_sphere(2000), 11));
+  return c;
+}
+
+const Case &random_sphere_case() {
+  static const Case c = make_case("uniform random sphere", sphere_random(1500, 1.0, 12));
+  return c;
+}
+
+const Case &torus_grid_case() {
+  // Every grid cell is an isosceles trapezoid: four co-circular points.
+  static const Case c = make_case("regular torus grid", shuffled(torus_grid(60, 24, 1.0, 0.4), 13));
+  return c;
+}
+
+const Case &genus2_case() {
+  static const Case c = make_case("genus-2 surface", shuffled(genus_surface(2, 0.1, 14), 14));
+  return c;
+}
+
+const Case &genus3_case() {
+  static const Case c = make_case("genus-3 surface", shuffled(genus_surface(3, 0.11, 15), 15));
+  return c;
+}
+
+const Case &cube_case() {
+  // Sharp edges and corners, and square grids full of ties on every face.
+  static const Case c = make_case("cube grid", shuffled(cube_grid(14), 16));
+  return c;
+}
+
+const Case &sphere_duplicates_case() {
+  // A Fibonacci sphere with every tenth point given twice: the copies must be merged.
+  Points p = fibonacci_sphere(1000);
+  for (std::size_t i = 0; i < 1000; i += 10) p.insert(p.end(), p.begin() + 3 * i, p.begin() + 3 * i + 3);
+  static const Case c = make_case("Fibonacci sphere with duplicates", shuffled(p, 17), 100);
+  return c;
+}
+
+}  // namespace
+
+MOA_CONTRACT_TESTS(fibonacci_sphere)
+MOA_CONTRACT_TESTS(random_sphere)
+MOA_CONTRACT_TESTS(torus_grid)
+MOA_CONTRACT_TESTS(genus2)
+MOA_CONTRACT_TESTS(genus3)
+MOA_CONTRACT_TESTS(cube)
+MOA_CONTRACT_TESTS(sphere_duplicates)
+
+static void test_fibonacci_sphere_closed_genus0(void **) { MOA_EXPECT(closed_failure(fibonacci_sphere_case(), 0)); }
+static void test_random_sphere_closed_genus0(void **) { MOA_EXPECT(closed_failure(random_sphere_case(), 0)); }
+static void test_torus_grid_closed_genus1(void **) { MOA_EXPECT(closed_failure(torus_grid_case(), 1)); }
+static void test_genus2_closed_genus2(void **) { MOA_EXPECT(closed_failure(genus2_case(), 2)); }
+static void test_genus3_closed_genus3(void **) { MOA_EXPECT(closed_failure(genus3_case(), 3)); }
+static void test_cube_closed_genus0(void **) { MOA_EXPECT(closed_failure(cube_case(), 0)); }
+static void test_sphere_duplicates_closed_genus0(void **) {
+  MOA_EXPECT(closed_failure(sphere_duplicates_case(), 0));
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      MOA_CONTRACT_ENTRIES(fibonacci_sphere), cmocka_unit_test(test_fibonacci_sphere_closed_genus0),
+      MOA_CONTRACT_ENTRIES(random_sphere),    cmocka_unit_test(test_random_sphere_closed_genus0),
+      MOA_CONTRACT_ENTRIES(torus_grid),       cmocka_unit_test(test_torus_grid_closed_genus1),
+      MOA_CONTRACT_ENTRIES(genus2),           cmocka_unit_test(test_genus2_closed_genus2),
+      MOA_CONTRACT_ENTRIES(genus3),           cmocka_unit_test(test_genus3_closed_genus3),
+      MOA_CONTRACT_ENTRIES(cube),             cmocka_unit_test(test_cube_closed_genus0),
+      MOA_CONTRACT_ENTRIES(sphere_duplicates), cmocka_unit_test(test_sphere_duplicates_closed_genus0),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,65 @@
+// Property tests on open patches: the contract (C1-C6), consistent stats, and a single disk
+// (one boundary loop, Euler characteristic 1) that uses every point; the true border stays open.
+#include "core_harness.hpp"
+
+// cmocka last: its macros (fail, ...) clash with names in the standard headers.
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+extern "C" {  // this cmocka's header has no C++ guard of its own
+#include <cmocka.h>
+}
+
+using namespace moa::test;
+
+namespace {
+
+Points shuffled(Points p, std::uint64_t seed) {
+  shuffle(p, seed);
+  return p;
+}
+
+const Case &flat_grid_case() {
+  // Integer coordinates: every unit square is an exact four-way Delaunay tie.
+  static const Case c = make_case("flat grid", shuffled(flat_grid(40, 40, 1.0), 21));
+  return c;
+}
+
+const Case &flat_grid_tenths_case() {
+  // Spacing 0.1 is not a binary fraction: the ties are broken by rounding, by a hair.
+  static const Case c = make_case("flat grid, spacing 0.1", shuffled(flat_grid(40, 40, 0.1), 22));
+  return c;
+}
+
+const Case &hemisphere_case() {
+  static const Case c = make_case("hemisphere", shuffled(hemisphere(1000), 23));
+  return c;
+}
+
+const Case &saddle_case() {
+  static const Case c = make_case("saddle", shuffled(saddle(0.07, 24), 24));
+  return c;
+}
+
+}  // namespace
+
+MOA_CONTRACT_TESTS(flat_grid)
+MOA_CONTRACT_TESTS(flat_grid_tenths)
+MOA_CONTRACT_TESTS(hemisphere)
+MOA_CONTRACT_TESTS(saddle)
+
+static void test_flat_grid_disk(void **) { MOA_EXPECT(disk_failure(flat_grid_case())); }
+static void test_flat_grid_tenths_disk(void **) { MOA_EXPECT(disk_failure(flat_grid_tenths_case())); }
+static void test_hemisphere_disk(void **) { MOA_EXPECT(disk_failure(hemisphere_case())); }
+static void test_saddle_disk(void **) { MOA_EXPECT(disk_failure(saddle_case())); }
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      MOA_CONTRACT_ENTRIES(flat_grid),        cmocka_unit_test(test_flat_grid_disk),
+      MOA_CONTRACT_ENTRIES(flat_grid_tenths), cmocka_unit_test(test_flat_grid_tenths_disk),
+      MOA_CONTRACT_ENTRIES(hemisphere),       cmocka_unit_test(test_hemisphere_disk),
+      MOA_CONTRACT_ENTRIES(saddle),           cmocka_unit_test(test_saddle_disk),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}

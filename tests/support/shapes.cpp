@@ -1,0 +1,329 @@
+// Point-set generators. Irregular surfaces are sampled in two steps: many random candidates on
+// the surface, then greedy blue-noise thinning, which bounds the spacing from below (no clumps)
+// and, with enough candidates, from above (no holes) — a well-sampled input by construction.
+#include "support/shapes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+namespace moa::test {
+
+namespace {
+
+constexpr double k_pi = 3.14159265358979323846;
+
+void push(Points &p, double x, double y, double z) {
+  p.push_back(x);
+  p.push_back(y);
+  p.push_back(z);
+}
+
+// Surface of the lattice box with n[a] cells along axis a between lo[a] and hi[a].
+Points box_lattice(const std::size_t (&n)[3], const double (&lo)[3], const double (&hi)[3]) {
+  Points p;
+  auto coord = [&](int a, std::size_t i) {
+    return i == n[a] ? hi[a] : lo[a] + (hi[a] - lo[a]) * double(i) / double(n[a]);
+  };
+  for (std::size_t k = 0; k <= n[2]; ++k)
+    for (std::size_t j = 0; j <= n[1]; ++j)
+      for (std::size_t i = 0; i <= n[0]; ++i) {
+        const bool surface = i == 0 || i == n[0] || j == 0 || j == n[1] || k == 0 || k == n[2];
+        if (surface) push(p, coord(0, i), coord(1, j), coord(2, k));
+      }
+  return p;
+}
+
+// Blue-noise samples of the square [0,side]^2 (z = 0) with its border sampled first.
+Points blue_noise_square(double side, double spacing, Rng &rng) {
+  Points candidates;
+  const double step = spacing / 16;
+  const std::size_t per_edge = static_cast<std::size_t>(std::ceil(side / step));
+  for (int edge = 0; edge < 4; ++edge)
+    for (std::size_t i = 0; i < per_edge; ++i) {
+      const double s = side * double(i) / double(per_edge);
+      const double xy[4][2] = {{s, 0}, {side, s}, {side - s, side}, {0, side - s}};
+      push(candidates, xy[edge][0], xy[edge][1], 0);
+    }
+  const std::size_t inner = static_cast<std::size_t>(40 * side * side / (spacing * spacing));
+  for (std::size_t i = 0; i < inner; ++i) push(candidates, rng.uniform(0, side), rng.uniform(0, side), 0);
+  return thin_points(candidates, spacing);
+}
+
+// The blended row of tori used by genus_surface: f = softmin_k(d_k) - r, d_k the distance to
+// the k-th core circle. The soft minimum rounds the creases where the tubes meet.
+struct ToriRow {
+  int count;
+  double R = 1.0, r = 0.35, gap = 2.1, blend = 0.12;
+  double centre(int k) const { return (k - 0.5 * (count - 1)) * gap; }
+  double value(const double *p, double *grad) const {
+    double d[3], g[3][3], dmin = HUGE_VAL;
+    for (int k = 0; k < count; ++k) {
+      const double qx = p[0] - centre(k), qy = p[1], qz = p[2];
+      const double rho = std::sqrt(qx * qx + qy * qy), t = rho - R;
+      d[k] = std::sqrt(t * t + qz * qz);
+      g[k][0] = t * qx / (rho * d[k]);
+      g[k][1] = t * qy / (rho * d[k]);
+      g[k][2] = qz / d[k];
+      dmin = std::min(dmin, d[k]);
+    }
+    double sum = 0, w[3];
+    for (int k = 0; k < count; ++k) sum += w[k] = std::exp(-(d[k] - dmin) / blend);
+    for (int a = 0; a < 3; ++a) {
+      grad[a] = 0;
+      for (int k = 0; k < count; ++k) grad[a] += w[k] / sum * g[k][a];
+    }
+    return dmin - blend * std::log(sum) - r;
+  }
+};
+
+}  // namespace
+
+double Rng::uniform() { return double(engine_() >> 11) * 0x1.0p-53; }
+
+double Rng::normal() {
+  if (has_spare_) {
+    has_spare_ = false;
+    return spare_;
+  }
+  for (;;) {
+    const double u = 2 * uniform() - 1, v = 2 * uniform() - 1, s = u * u + v * v;
+    if (s <= 0 || s >= 1) continue;
+    const double f = std::sqrt(-2 * std::log(s) / s);
+    spare_ = v * f;
+    has_spare_ = true;
+    return u * f;
+  }
+}
+
+std::uint64_t Rng::below(std::uint64_t n) {
+  const std::uint64_t threshold = (0 - n) % n;  // 2^64 mod n: the biased low values
+  for (;;) {
+    const std::uint64_t x = engine_();
+    if (x >= threshold) return x % n;
+  }
+}
+
+Points fibonacci_sphere(std::size_t n, double radius) {
+  Points p;
+  const double golden = k_pi * (3 - std::sqrt(5.0));
+  for (std::size_t i = 0; i < n; ++i) {
+    const double z = 1 - (2 * double(i) + 1) / double(n), s = std::sqrt(1 - z * z);
+    const double phi = golden * double(i);
+    push(p, radius * s * std::cos(phi), radius * s * std::sin(phi), radius * z);
+  }
+  return p;
+}
+
+Points sphere_random(std::size_t n, double radius, std::uint64_t seed) {
+  return ellipsoid_random(n, radius, radius, radius, seed);
+}
+
+Points ellipsoid_random(std::size_t n, double a, double b, double c, std::uint64_t seed) {
+  Rng rng(seed);
+  Points p;
+  // Map the uniform sphere linearly; the area grows by abc * |(x/a, y/b, z/c)| there, so keep
+  // each point with that weight over its maximum (rejection).
+  const double max_weight = 1 / std::min({a, b, c});
+  while (p.size() < 3 * n) {
+    const double x = rng.normal(), y = rng.normal(), z = rng.normal();
+    const double len = std::sqrt(x * x + y * y + z * z);
+    if (len < 1e-9) continue;
+    const double ux = x / len, uy = y / len, uz = z / len;
+    const double weight = std::sqrt(ux * ux / (a * a) + uy * uy / (b * b) + uz * uz / (c * c));
+    if (rng.uniform() * max_weight < weight) push(p, a * ux, b * uy, c * uz);
+  }
+  return p;
+}
+
+Points torus_random(std::size_t n, double R, double r, std::uint64_t seed) {
+  Rng rng(seed);
+  Points p;
+  while (p.size() < 3 * n) {
+    const double u = rng.uniform(0, 2 * k_pi), v = rng.uniform(0, 2 * k_pi);
+    // The area element is proportional to R + r cos v.
+    if (rng.uniform() * (R + r) >= R + r * std::cos(v)) continue;
+    push(p, (R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v));
+  }
+  return p;
+}
+
+Points torus_grid(std::size_t nu, std::size_t nv, double R, double r) {
+  Points p;
+  for (std::size_t j = 0; j < nv; ++j)
+    for (std::size_t i = 0; i < nu; ++i) {
+      const double u = 2 * k_pi * double(i) / double(nu), v = 2 * k_pi * double(j) / double(nv);
+      push(p, (R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v));
+    }
+  return p;
+}
+
+Points genus_surface(int genus, double spacing, std::uint64_t seed) {
+  const ToriRow row{std::clamp(genus, 1, 3)};
+  Rng rng(seed);
+  const double area = row.count * 4 * k_pi * k_pi * row.R * row.r;
+  const std::size_t count = static_cast<std::size_t>(30 * area / (spacing * spacing));
+  Points candidates;
+  for (std::size_t i = 0; i < count; ++i) {
+    // Start on one of the plain tori (uniform by area), then project onto the blended surface.
+    const int k = static_cast<int>(rng.below(std::uint64_t(row.count)));
+    double u, v;
+    do {
+      u = rng.uniform(0, 2 * k_pi);
+      v = rng.uniform(0, 2 * k_pi);
+    } while (rng.uniform() * (row.R + row.r) >= row.R + row.r * std::cos(v));
+    const double rr = row.R + row.r * std::cos(v);
+    double p[3] = {row.centre(k) + rr * std::cos(u), rr * std::sin(u), row.r * std::sin(v)};
+    bool converged = false;
+    for (int step = 0; step < 30 && !converged; ++step) {
+      double g[3];
+      const double f = row.value(p, g), g2 = g[0] * g[0] + g[1] * g[1] + g[2] * g[2];
+      if (g2 < 1e-12) break;
+      for (int a = 0; a < 3; ++a) p[a] -= f * g[a] / g2;
+      converged = std::fabs(f) < 1e-13;
+    }
+    if (converged) push(candidates, p[0], p[1], p[2]);
+  }
+  return thin_points(candidates, spacing);
+}
+
+Points box_grid(double lx, double ly, double lz, double spacing) {
+  auto cells = [&](double l) { return std::max<std::size_t>(1, std::size_t(std::lround(l / spacing))); };
+  const std::size_t n[3] = {cells(lx), cells(ly), cells(lz)};
+  const double lo[3] = {0, 0, 0}, hi[3] = {lx, ly, lz};
+  return box_lattice(n, lo, hi);
+}
+
+Points cube_grid(std::size_t n) {
+  const std::size_t cells[3] = {n, n, n};
+  const double lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
+  return box_lattice(cells, lo, hi);
+}
+
+Points flat_grid(std::size_t nx, std::size_t ny, double spacing) {
+  Points p;
+  for (std::size_t j = 0; j < ny; ++j)
+    for (std::size_t i = 0; i < nx; ++i) push(p, double(i) * spacing, double(j) * spacing, 0);
+  return p;
+}
+
+Points hemisphere(std::size_t n, double radius) {
+  Points p = fibonacci_sphere(2 * n, radius);
+  p.resize(3 * n);  // the first n points are exactly those with z > 0
+  return p;
+}
+
+Points saddle(double spacing, std::uint64_t seed) {
+  Rng rng(seed);
+  Points candidates;
+  auto lift = [&](double x, double y) { push(candidates, x, y, x * x - y * y); };
+  // The border first, densely, so the thinning keeps a regular border; then the inside.
+  const std::size_t per_edge = static_cast<std::size_t>(std::ceil(2 / (spacing / 16)));
+  for (int edge = 0; edge < 4; ++edge)
+    for (std::size_t i = 0; i < per_edge; ++i) {
+      const double s = -1 + 2 * double(i) / double(per_edge);
+      const double xy[4][2] = {{s, -1}, {1, s}, {-s, 1}, {-1, -s}};
+      lift(xy[edge][0], xy[edge][1]);
+    }
+  const std::size_t inner = static_cast<std::size_t>(40 * 8 / (spacing * spacing));
+  for (std::size_t i = 0; i < inner; ++i) lift(rng.uniform(-1, 1), rng.uniform(-1, 1));
+  return thin_points(candidates, spacing);  // in 3-D, so steep parts are not under-sampled
+}
+
+Points parallel_sheets(double side, double spacing, double gap, std::uint64_t seed) {
+  Rng rng(seed);
+  Points p = blue_noise_square(side, spacing, rng);
+  Points upper = blue_noise_square(side, spacing, rng);
+  for (std::size_t i = 2; i < upper.size(); i += 3) upper[i] = gap;
+  p.insert(p.end(), upper.begin(), upper.end());
+  return p;
+}
+
+void add_noise(Points &p, double fraction_of_diagonal, std::uint64_t seed) {
+  Rng rng(seed);
+  const double sigma = fraction_of_diagonal * bbox_diagonal(p);
+  for (double &v : p) v += sigma * rng.normal();
+}
+
+void shuffle(Points &p, std::uint64_t seed) {
+  Rng rng(seed);
+  for (std::size_t i = p.size() / 3; i > 1; --i) {
+    const std::size_t j = static_cast<std::size_t>(rng.below(i));
+    for (int a = 0; a < 3; ++a) std::swap(p[3 * (i - 1) + a], p[3 * j + a]);
+  }
+}
+
+double bbox_diagonal(const Points &p) {
+  double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    lo[i % 3] = std::min(lo[i % 3], p[i]);
+    hi[i % 3] = std::max(hi[i % 3], p[i]);
+  }
+  if (p.empty()) return 0;
+  return std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                   (hi[2] - lo[2]) * (hi[2] - lo[2]));
+}
+
+Points sample_mesh(const std::vector<double> &v, const std::vector<std::uint32_t> &t, std::size_t n,
+                   std::uint64_t seed) {
+  Rng rng(seed);
+  std::vector<double> cumulative;
+  double total = 0;
+  for (std::size_t f = 0; f + 2 < t.size(); f += 3) {
+    const double *a = &v[3 * t[f]], *b = &v[3 * t[f + 1]], *c = &v[3 * t[f + 2]];
+    const double e[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    const double g[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    const double x = e[1] * g[2] - e[2] * g[1], y = e[2] * g[0] - e[0] * g[2], z = e[0] * g[1] - e[1] * g[0];
+    total += 0.5 * std::sqrt(x * x + y * y + z * z);
+    cumulative.push_back(total);
+  }
+  Points p;
+  if (cumulative.empty()) return p;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double pick = rng.uniform() * total;
+    const std::size_t f = std::min<std::size_t>(
+        cumulative.size() - 1, std::upper_bound(cumulative.begin(), cumulative.end(), pick) - cumulative.begin());
+    // Uniform on the triangle: the square root keeps the density flat.
+    const double s = std::sqrt(rng.uniform()), w = rng.uniform();
+    const double ka = 1 - s, kb = s * (1 - w), kc = s * w;
+    const double *a = &v[3 * t[3 * f]], *b = &v[3 * t[3 * f + 1]], *c = &v[3 * t[3 * f + 2]];
+    push(p, ka * a[0] + kb * b[0] + kc * c[0], ka * a[1] + kb * b[1] + kc * c[1], ka * a[2] + kb * b[2] + kc * c[2]);
+  }
+  return p;
+}
+
+Points thin_points(const Points &candidates, double min_distance) {
+  // Hash grid with cells of min_distance: a conflicting point lies in one of the 27 cells around.
+  auto cell = [&](double x) { return static_cast<std::int64_t>(std::floor(x / min_distance)); };
+  auto key = [](std::int64_t x, std::int64_t y, std::int64_t z) {
+    return (std::uint64_t(x) * 73856093u) ^ (std::uint64_t(y) * 19349663u) ^ (std::uint64_t(z) * 83492791u);
+  };
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> grid;
+  Points kept;
+  const double d2 = min_distance * min_distance;
+  for (std::size_t i = 0; i + 2 < candidates.size(); i += 3) {
+    const double *c = &candidates[i];
+    const std::int64_t cx = cell(c[0]), cy = cell(c[1]), cz = cell(c[2]);
+    bool free = true;
+    for (std::int64_t dx = -1; dx <= 1 && free; ++dx)
+      for (std::int64_t dy = -1; dy <= 1 && free; ++dy)
+        for (std::int64_t dz = -1; dz <= 1 && free; ++dz) {
+          const auto it = grid.find(key(cx + dx, cy + dy, cz + dz));
+          if (it == grid.end()) continue;
+          for (std::uint32_t k : it->second) {
+            const double *q = &kept[3 * std::size_t(k)];
+            const double ex = q[0] - c[0], ey = q[1] - c[1], ez = q[2] - c[2];
+            if (ex * ex + ey * ey + ez * ez < d2) {
+              free = false;
+              break;
+            }
+          }
+        }
+    if (!free) continue;
+    grid[key(cx, cy, cz)].push_back(std::uint32_t(kept.size() / 3));
+    push(kept, c[0], c[1], c[2]);
+  }
+  return kept;
+}
+
+}  // namespace moa::test

@@ -1,0 +1,64 @@
+// Deterministic point sets for the property tests. Random shapes draw from a seeded
+// std::mt19937_64 through distributions implemented here, so the points are the same with every
+// standard library. Points are interleaved x y z; no generator emits exact duplicates.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+namespace moa::test {
+
+using Points = std::vector<double>;
+
+// Our own distributions on top of the engine (whose output sequence the standard fixes).
+class Rng {
+ public:
+  explicit Rng(std::uint64_t seed) : engine_(seed) {}
+  double uniform();                              // [0, 1) with 53 random bits
+  double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
+  double normal();                               // standard normal, Marsaglia polar method
+  std::uint64_t below(std::uint64_t n);          // uniform integer in [0, n), unbiased
+
+ private:
+  std::mt19937_64 engine_;
+  bool has_spare_ = false;
+  double spare_ = 0;
+};
+
+// Closed surfaces.
+Points fibonacci_sphere(std::size_t n, double radius = 1.0);
+Points sphere_random(std::size_t n, double radius, std::uint64_t seed);
+// Uniform by area on the ellipsoid with semi-axes a, b, c.
+Points ellipsoid_random(std::size_t n, double a, double b, double c, std::uint64_t seed);
+// Torus about the z axis: R to the tube's centre, r the tube radius.
+Points torus_random(std::size_t n, double R, double r, std::uint64_t seed);
+Points torus_grid(std::size_t nu, std::size_t nv, double R, double r);
+// A smooth closed surface of genus 1, 2 or 3 (tori in a row, blended where they meet), sampled
+// with minimum spacing `spacing` and no gap much wider than that.
+Points genus_surface(int genus, double spacing, std::uint64_t seed);
+// The surface of the box [0,lx] x [0,ly] x [0,lz] on a grid of about `spacing`, with its sharp
+// edges and corners sampled; cube_grid(n) is the box [-1,1]^3 with n cells along each edge.
+Points box_grid(double lx, double ly, double lz, double spacing);
+Points cube_grid(std::size_t n);
+
+// Open patches.
+Points flat_grid(std::size_t nx, std::size_t ny, double spacing = 1.0);  // z = 0, all ties
+Points hemisphere(std::size_t n, double radius = 1.0);                   // z > 0 half of a sphere
+// z = x^2 - y^2 over [-1,1]^2, blue-noise samples at about `spacing` in 3-D, border sampled.
+Points saddle(double spacing, std::uint64_t seed);
+// Two blue-noise sheets over [0,side]^2 at z = 0 and z = gap (gap below the spacing).
+Points parallel_sheets(double side, double spacing, double gap, std::uint64_t seed);
+
+// Helpers.
+void add_noise(Points &p, double fraction_of_diagonal, std::uint64_t seed);
+void shuffle(Points &p, std::uint64_t seed);
+double bbox_diagonal(const Points &p);
+// n points uniform by area on a triangle mesh.
+Points sample_mesh(const std::vector<double> &vertices, const std::vector<std::uint32_t> &triangles,
+                   std::size_t n, std::uint64_t seed);
+// Greedy blue-noise thinning: keeps candidates (in order) at least min_distance from all kept.
+Points thin_points(const Points &candidates, double min_distance);
+
+}  // namespace moa::test
