@@ -168,6 +168,20 @@ bool triangles_cross(const Vec3 t[3], const unsigned it[3], const Vec3 f[3], con
         ++shared;
       }
   if (shared == 3) return true;
+  // Separated by a plane: all corners of one triangle that are not shared lie strictly on one
+  // side of the other's plane. Then the two meet at most in what they share. Most pairs end
+  // here, after two or three orientation tests.
+  auto strictly_one_side = [](const Vec3 p[3], const Vec3 q[3], const int sq[3]) {
+    int side = 0;
+    for (int j = 0; j < 3; ++j) {
+      if (sq[j] >= 0) continue;
+      int o = orient3d(p[0], p[1], p[2], q[j]);
+      if (o == 0 || (side != 0 && o != side)) return false;
+      side = o;
+    }
+    return side != 0;
+  };
+  if (shared < 2 && (strictly_one_side(t, f, sf) || strictly_one_side(f, t, st))) return false;
   if (shared == 0) {
     for (int i = 0; i < 3; ++i) {
       if (segment_meets_triangle(t[i], t[(i + 1) % 3], f[0], f[1], f[2])) return true;

@@ -11,7 +11,7 @@ namespace {
 
 // A triangle whose largest angle exceeds this is a needle or a cap: its area is nearly zero
 // and its normal meaningless.
-const double kMaxCornerAngle = degrees_to_radians(175.0);
+const double kMaxCornerCos = std::cos(degrees_to_radians(175.0));
 
 // A triangle whose normal is more than about 100 degrees from the mean normal of a fan it
 // joins faces backwards.
@@ -33,6 +33,8 @@ bool covers(const Vec3 &a, const Vec3 &b, const Vec3 &c, const Vec3 &n, const Ve
 // this many mean edge lengths (facing the same way within one component) or than the other.
 constexpr double kSameFacingLayer = 1.0;
 constexpr double kAnyLayer = 0.3;
+// Faces are searched within this many mean edge lengths of t's bounding box.
+constexpr double kGatherPad = 0.5;
 // Triangles are shrunk this much toward their centres before the overlap test, so that
 // touching along shared vertices does not count.
 constexpr double kShrink = 0.98;
@@ -80,8 +82,13 @@ TopologyJudge::TopologyJudge(const PointSet &points, const Neighborhood &nb, con
 
 bool TopologyJudge::degenerate(const Tri &t) const {
   const Vec3 &a = points_.work[t[0]], &b = points_.work[t[1]], &c = points_.work[t[2]];
-  if (angle_at(a, b, c) > kMaxCornerAngle || angle_at(b, c, a) > kMaxCornerAngle ||
-      angle_at(c, a, b) > kMaxCornerAngle)
+  // A corner above the limit has a cosine below cos(limit).
+  auto corner_cos = [](const Vec3 &p, const Vec3 &q, const Vec3 &r) {
+    Vec3 u = q - p, v = r - p;
+    return dot(u, v) / std::sqrt(norm2(u) * norm2(v));
+  };
+  if (corner_cos(a, b, c) < kMaxCornerCos || corner_cos(b, c, a) < kMaxCornerCos ||
+      corner_cos(c, a, b) < kMaxCornerCos)
     return true;
   return collinear(points_.exact[t[0]], points_.exact[t[1]], points_.exact[t[2]]);
 }
@@ -181,7 +188,7 @@ bool TopologyJudge::overlaps_layer(const Tri &t, const Frame &frame) const {
   const Vec3 &a = w[t[0]], &b = w[t[1]], &c = w[t[2]];
   Vec3 n = normalized(cross(b - a, c - a));
   double bl = (dist(a, b) + dist(b, c) + dist(c, a)) / 3.0;
-  crossings_.gather(t, bl, mesh_, near_);
+  crossings_.gather(t, kGatherPad * bl, mesh_, near_);
   Vec3 e1 = normalized(b - a), e2 = cross(n, e1);
   auto project = [&](const Vec3 &p, const Vec3 &centre, double(&out)[2]) {
     Vec3 q = centre + (p - centre) * kShrink - a;
@@ -191,32 +198,36 @@ bool TopologyJudge::overlaps_layer(const Tri &t, const Frame &frame) const {
   double tp[3][2];
   Vec3 ct = centroid(a, b, c);
   for (int i = 0; i < 3; ++i) project(w[t[i]], ct, tp[i]);
+  const double reach = std::max({dist(ct, a), dist(ct, b), dist(ct, c)});
   for (uint32_t f : near_) {
     const Tri &g = mesh_.stored(f);
     int shared = 0;
     for (uint32_t x : g) shared += (x == t[0] || x == t[1] || x == t[2]);
     if (shared >= 2) continue;  // sharing an edge: the edge-fold angle decides
+    // Cheapest tests first: height above t's plane, then the overlap in projection.
     const Vec3 &ga = w[g[0]], &gb = w[g[1]], &gc = w[g[2]];
-    Vec3 ng = normalized(cross(gb - ga, gc - ga));
-    double facing = dot(ng, n);
-    if (std::fabs(facing) < 0.5) continue;  // not a parallel layer
-    double s = frame.sign_of(mesh_.component(f));
-    if (s != 0) {
-      // Same orientation class: compare with the face as oriented.
-      Tri go = mesh_.oriented(f);
-      facing = go == g ? facing : -facing;
-      facing *= s;
-    }
-    double limit = (s != 0 && facing > 0) ? kSameFacingLayer * bl : kAnyLayer * bl;
+    Vec3 cg0 = centroid(ga, gb, gc);
+    double greach = std::max({dist(cg0, ga), dist(cg0, gb), dist(cg0, gc)});
+    if (dist(cg0, ct) > reach + greach) continue;  // too far apart to overlap at all
     double h =
         std::max({std::fabs(dot(ga - a, n)), std::fabs(dot(gb - a, n)), std::fabs(dot(gc - a, n))});
-    if (h > limit) continue;
+    if (h > kSameFacingLayer * bl) continue;
     double gp[3][2];
     Vec3 cg = centroid(ga, gb, gc);
     project(ga, cg, gp[0]);
     project(gb, cg, gp[1]);
     project(gc, cg, gp[2]);
-    if (triangles_overlap_2d(tp, gp)) return true;
+    if (!triangles_overlap_2d(tp, gp)) continue;
+    Vec3 ng = normalized(cross(gb - ga, gc - ga));
+    double facing = dot(ng, n);
+    if (std::fabs(facing) < 0.5) continue;  // not a parallel layer
+    if (h <= kAnyLayer * bl) return true;
+    // Between the two limits only a layer facing the same way within one orientation class
+    // counts: the far sheet of a thin part faces the other way.
+    double s = frame.sign_of(mesh_.component(f));
+    if (s == 0) continue;
+    Tri go = mesh_.oriented(f);
+    if ((go == g ? facing : -facing) * s > 0) return true;
   }
   return false;
 }
@@ -238,7 +249,8 @@ bool TopologyJudge::flatness_fails(const Tri &t, const uint32_t *sphere, std::si
     // A point straight above or below the triangle is another sheet of a thin part (the
     // paper's thin slabs), not a fold beside it: the crossing test keeps the sheets apart.
     if (di < 0.5 * bl) continue;
-    double T = norm2(dp) / (bl * bl) * std::pow(pi / di, flatness_c_);
+    double ratio = pi / di;
+    double T = norm2(dp) / (bl * bl) * (flatness_c_ == 1.0 ? ratio : std::pow(ratio, flatness_c_));
     if (T >= flatness_a_) return true;
   }
   return false;
