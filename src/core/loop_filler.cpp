@@ -36,7 +36,9 @@ struct HoleEdge {
 };
 
 // Largest number of loop vertices ranked for one segment: the nearest ones to its midpoint.
-constexpr std::size_t kMaxLoopCandidates = 48;
+constexpr std::size_t kMaxLoopCandidates = 24;
+// Candidate lists longer than this are searched through the k-NN graph instead of scanned.
+constexpr std::size_t kMaxScannedPool = 128;
 constexpr int kPasses = 4;
 // Loops longer than this are borders unless the solid setting closes everything: measuring
 // their width costs a quadratic number of distances.
@@ -289,10 +291,27 @@ class LoopFiller {
       own = g_.mesh.component(fs[0]);
     }
     near_.clear();
-    for (uint32_t c : pool) {
-      if (c == u || c == v || c == z) continue;
-      if (other_loops && g_.mesh.component(g_.mesh.faces_at(c)[0]) == own) continue;
+    auto consider = [&](uint32_t c) {
+      if (c == u || c == v || c == z) return;
+      if (other_loops && g_.mesh.component(g_.mesh.faces_at(c)[0]) == own) return;
       near_.push_back(c);
+    };
+    if (pool.size() <= kMaxScannedPool) {
+      for (uint32_t c : pool) consider(c);
+    } else {
+      // A long loop: its members among the neighbours of u and v, instead of a scan of the
+      // whole list for every segment.
+      for (uint32_t s : {u, v}) {
+        const uint32_t *nb = g_.nb.of(s);
+        for (unsigned j = 0; j < g_.nb.k; ++j) {
+          uint32_t c = nb[j];
+          auto it = loop_of_vertex_.find(c);
+          bool member = other_loops ? (it != loop_of_vertex_.end() && it->second != loop_id)
+                                    : ((it != loop_of_vertex_.end() && it->second == loop_id) ||
+                                       !g_.mesh.is_used(c));
+          if (member && std::find(near_.begin(), near_.end(), c) == near_.end()) consider(c);
+        }
+      }
     }
     if (near_.size() > kMaxLoopCandidates) {
       std::nth_element(near_.begin(), near_.begin() + kMaxLoopCandidates, near_.end(),

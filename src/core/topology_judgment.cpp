@@ -270,7 +270,7 @@ Verdict TopologyJudge::judge(const Tri &t, const uint32_t *sphere, std::size_t c
   if (!relaxed && normal_deviates(t)) return Verdict::Flatness;
   if (edge_folds(t)) return Verdict::EdgeFold;
   Frame frame = frame_of(t);
-  if (vertex_folds(t) || faces_backwards(t, frame)) return Verdict::VertexFold;
+  if (!relaxed && (vertex_folds(t) || faces_backwards(t, frame))) return Verdict::VertexFold;
   if (!relaxed && count > 0 && flatness_fails(t, sphere, count)) return Verdict::Flatness;
   if (crossings_.crosses(t, mesh_)) return Verdict::Intersection;
   if (overlaps_layer(t, frame)) return Verdict::VertexFold;
