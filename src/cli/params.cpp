@@ -9,9 +9,10 @@
 namespace moa::cli {
 
 const char *const kParamsHelp =
-    "Usage: moa params\n"
+    "Usage: moa params [--markdown]\n"
     "\n"
     "Lists every reconstruction parameter with its default, its range and what it does.\n"
+    "  --markdown   print the list as the Markdown table of the README\n"
     "Set one with: moa reconstruct INPUT -o OUTPUT --param NAME=VALUE\n";
 
 namespace {
@@ -44,14 +45,34 @@ void print_wrapped(const std::string &text, size_t indent, size_t width) {
 
 int run_params(int argc, char **argv) {
   ArgWalker args(argc, argv, "params");
+  bool markdown = false;
   while (args.next()) {
     if (args.is("-h", "--help")) {
       std::fputs(kParamsHelp, stdout);
       return kExitOk;
     }
+    if (args.is(nullptr, "--markdown")) {
+      markdown = true;
+      continue;
+    }
     args.unknown();
   }
   const size_t count = moa_param_count();
+  if (markdown) {
+    std::printf("| name | default | range | description |\n|---|---|---|---|\n");
+    for (size_t i = 0; i < count; ++i) {
+      moa_param_info info;
+      if (moa_param_info_get(i, &info) != MOA_OK)
+        throw CliError(kExitInternal, "cannot read parameter " + std::to_string(i));
+      std::string description = info.description;
+      for (std::size_t at = 0; (at = description.find('|', at)) != std::string::npos; at += 2)
+        description.replace(at, 1, "\\|");  // a bare | would end the table cell
+      std::printf("| `%s` | %g | %g to %g%s | %s |\n", info.name, info.default_value,
+                  info.min_value, info.max_value, info.is_integral ? ", whole" : "",
+                  description.c_str());
+    }
+    return kExitOk;
+  }
   std::printf("%zu parameters (set with --param NAME=VALUE):\n", count);
   for (size_t i = 0; i < count; ++i) {
     moa_param_info info;

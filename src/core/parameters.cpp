@@ -28,7 +28,7 @@ const ParamRow kRows[] = {
      "in units of the local point spacing (never less than just over half the segment)",
      0.6, 8, false, &Params::sphere_radius},
     {"flatness_a",
-     "threshold a of the topology judgment function T = (|PD|/b)^2 (|PI|/|DI|)^c: "
+     "threshold a of the topology judgment function T = (PD/b)^2 (PI/DI)^c: "
      "a triangle is rejected when a neighbour in its sphere has T >= a",
      0.01, 1e9, false, &Params::flatness_a},
     {"flatness_c", "exponent c of the topology judgment function T", 0.25, 4, false,
@@ -50,8 +50,10 @@ const ParamRow kRows[] = {
      "plane fitted at each of its vertices",
      1, 90, false, &Params::max_normal_deviation},
     {"hole_size",
-     "largest hole the loop module closes, as its perimeter in units of the local "
-     "point spacing; larger loops are treated as true borders",
+     "widest hole the loop module closes, in units of the local point spacing; a loop's "
+     "width is the largest distance from one of its vertices to the nearest vertex a "
+     "quarter of the loop away, so a long narrow gap is a hole and an open scan's rim, as "
+     "wide as the surface, a border",
      0, 1e9, false, &Params::hole_size},
     {"solid",
      "1 closes every hole whatever its size (the paper's solid models); 0 keeps large "

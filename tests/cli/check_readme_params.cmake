@@ -1,0 +1,21 @@
+# Fails unless the table between the params markers of README.md equals `moa params --markdown`.
+execute_process(COMMAND ${MOA} params --markdown OUTPUT_VARIABLE table RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "moa params --markdown failed with ${rc}")
+endif()
+file(READ ${README} readme)
+set(marker "<!-- params:begin -->\n")
+string(LENGTH "${marker}" marker_length)
+string(FIND "${readme}" "${marker}" begin)
+string(FIND "${readme}" "<!-- params:end -->" end)
+if(begin EQUAL -1 OR end EQUAL -1)
+  message(FATAL_ERROR "README.md has no params:begin/params:end markers")
+endif()
+math(EXPR begin "${begin} + ${marker_length}")
+math(EXPR length "${end} - ${begin}")
+string(SUBSTRING "${readme}" ${begin} ${length} documented)
+if(NOT documented STREQUAL table)
+  message(FATAL_ERROR "README.md's parameter table differs from `moa params --markdown`:\n"
+                      "--- README\n${documented}--- library\n${table}"
+                      "Regenerate it with: moa params --markdown")
+endif()
