@@ -175,7 +175,8 @@ bool CrossingIndex::visit_near(const Vec3 &lo, const Vec3 &hi, MeshState &mesh, 
   return false;
 }
 
-bool CrossingIndex::crosses(const Tri &t, MeshState &mesh) {
+bool CrossingIndex::crosses(const Tri &t, double pad, MeshState &mesh,
+                            std::vector<uint32_t> &near) {
   auto start = std::chrono::steady_clock::now();
   struct Timer {
     std::chrono::steady_clock::time_point s;
@@ -184,10 +185,13 @@ bool CrossingIndex::crosses(const Tri &t, MeshState &mesh) {
   } timer{start, seconds_};
 
   next_query(mesh);
+  near.clear();
   // Faces sharing a vertex: the common case, decided exactly without any index.
   for (uint32_t v : t)
-    for (uint32_t f : mesh.faces_at(v))
+    for (uint32_t f : mesh.faces_at(v)) {
+      if (stamp_[f] != query_) near.push_back(f);
       if (test_exact(t, f, mesh)) return true;
+    }
 
   // Committed faces: rays along the three edges first; they find the usual crossing quickly.
   if (scene_ && committed_ > 0) {
@@ -214,31 +218,28 @@ bool CrossingIndex::crosses(const Tri &t, MeshState &mesh) {
       rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
       rtcIntersect1(scene, &cc.base, &rh);
     }
-    for (uint32_t f : found_)
+    for (uint32_t f : found_) {
+      if (stamp_[f] != query_ && mesh.alive(f)) near.push_back(f);
       if (test_exact(t, f, mesh)) return true;
-  }
-  // Then every face near t: faces whose own edges could pierce it, and the pending ones.
-  Vec3 lo, hi;
-  bounds(t, lo, hi);
-  return visit_near(lo, hi, mesh, [&](uint32_t f) { return test_exact(t, f, mesh); });
-}
-
-void CrossingIndex::gather(const Tri &t, double pad, MeshState &mesh, std::vector<uint32_t> &out) {
-  next_query(mesh);
-  out.clear();
-  auto take = [&](uint32_t f) {
-    if (stamp_[f] != query_ && mesh.alive(f)) {
-      stamp_[f] = query_;
-      out.push_back(f);
     }
-    return false;
-  };
-  for (uint32_t v : t)
-    for (uint32_t f : mesh.faces_at(v)) take(f);
+  }
+  // Then every face near t: faces whose own edges could pierce it, and the pending ones. The
+  // box is padded for the neighbourhood; only faces whose boxes meet t's are tested.
   Vec3 lo, hi;
   bounds(t, lo, hi);
   Vec3 p{pad, pad, pad};
-  visit_near(lo - p, hi + p, mesh, take);
+  return visit_near(lo - p, hi + p, mesh, [&](uint32_t f) {
+    if (stamp_[f] == query_ || !mesh.alive(f)) return false;
+    near.push_back(f);
+    Vec3 flo, fhi;
+    bounds(mesh.stored(f), flo, fhi);
+    if (fhi.x < lo.x || flo.x > hi.x || fhi.y < lo.y || flo.y > hi.y || fhi.z < lo.z ||
+        flo.z > hi.z) {
+      stamp_[f] = query_;
+      return false;
+    }
+    return test_exact(t, f, mesh);
+  });
 }
 
 std::size_t CrossingIndex::memory_bytes() const {

@@ -24,11 +24,10 @@ class CrossingIndex {
   CrossingIndex &operator=(const CrossingIndex &) = delete;
 
   // True when triangle t would meet an existing face anywhere other than in shared vertices
-  // and edges.
-  bool crosses(const Tri &t, MeshState &mesh);
-  // Faces whose bounding boxes come within `pad` (work units) of t's: the neighbourhood the
-  // judgment searches for overlapping layers. Faces sharing a vertex with t are included.
-  void gather(const Tri &t, double pad, MeshState &mesh, std::vector<uint32_t> &out);
+  // and edges. On false, `near` holds every face whose bounding box comes within `pad` (work
+  // units) of t's, faces sharing a vertex with t included: the neighbourhood the judgment
+  // then searches for overlapping layers, found by the same queries.
+  bool crosses(const Tri &t, double pad, MeshState &mesh, std::vector<uint32_t> &near);
   // Registers face f (already added to mesh).
   void face_added(uint32_t f, MeshState &mesh);
 

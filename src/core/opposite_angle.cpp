@@ -1,6 +1,7 @@
 #include "core/opposite_angle.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace moa {
 
@@ -39,10 +40,11 @@ void OppositeAngleSearch::rank(uint32_t a, uint32_t b, const std::vector<uint32_
     if (c == a || c == b || c == exclude) continue;
     const Vec3 &C = points_.work[c];
     if (!any_side && dot(C - A, side) <= 0) continue;
-    out.push_back({angle_at(C, A, B), c});
+    Vec3 ca = A - C, cb = B - C;
+    out.push_back({dot(ca, cb) / std::sqrt(norm2(ca) * norm2(cb)), c});
   }
   std::sort(out.begin(), out.end(), [](const Candidate &x, const Candidate &y) {
-    return x.angle != y.angle ? x.angle > y.angle : x.vertex < y.vertex;
+    return x.cosine != y.cosine ? x.cosine < y.cosine : x.vertex < y.vertex;
   });
 }
 

@@ -14,7 +14,7 @@
 namespace moa {
 
 struct Candidate {
-  double angle;  // the opposite angle ACB, radians
+  double cosine;  // cosine of the opposite angle ACB: the smaller, the larger the angle
   uint32_t vertex;
 };
 

@@ -180,7 +180,8 @@ bool TopologyJudge::faces_backwards(const Tri &t, const Frame &frame) const {
   return false;
 }
 
-bool TopologyJudge::overlaps_layer(const Tri &t, const Frame &frame) const {
+bool TopologyJudge::overlaps_layer(const Tri &t, const Frame &frame,
+                                   const std::vector<uint32_t> &near) const {
   // Two triangles that overlap when projected onto t's plane, lying close to it and facing
   // the same way, make a two-layered surface even when they do not intersect (a large
   // triangle under small ones): the duplicated structure of paper Fig. 6 (2).
@@ -188,7 +189,6 @@ bool TopologyJudge::overlaps_layer(const Tri &t, const Frame &frame) const {
   const Vec3 &a = w[t[0]], &b = w[t[1]], &c = w[t[2]];
   Vec3 n = normalized(cross(b - a, c - a));
   double bl = (dist(a, b) + dist(b, c) + dist(c, a)) / 3.0;
-  crossings_.gather(t, kGatherPad * bl, mesh_, near_);
   Vec3 e1 = normalized(b - a), e2 = cross(n, e1);
   auto project = [&](const Vec3 &p, const Vec3 &centre, double(&out)[2]) {
     Vec3 q = centre + (p - centre) * kShrink - a;
@@ -199,7 +199,7 @@ bool TopologyJudge::overlaps_layer(const Tri &t, const Frame &frame) const {
   Vec3 ct = centroid(a, b, c);
   for (int i = 0; i < 3; ++i) project(w[t[i]], ct, tp[i]);
   const double reach = std::max({dist(ct, a), dist(ct, b), dist(ct, c)});
-  for (uint32_t f : near_) {
+  for (uint32_t f : near) {
     const Tri &g = mesh_.stored(f);
     int shared = 0;
     for (uint32_t x : g) shared += (x == t[0] || x == t[1] || x == t[2]);
@@ -272,8 +272,11 @@ Verdict TopologyJudge::judge(const Tri &t, const uint32_t *sphere, std::size_t c
   Frame frame = frame_of(t);
   if (!relaxed && (vertex_folds(t) || faces_backwards(t, frame))) return Verdict::VertexFold;
   if (!relaxed && count > 0 && flatness_fails(t, sphere, count)) return Verdict::Flatness;
-  if (crossings_.crosses(t, mesh_)) return Verdict::Intersection;
-  if (overlaps_layer(t, frame)) return Verdict::VertexFold;
+  const auto &w = points_.work;
+  double mean_edge =
+      (dist(w[t[0]], w[t[1]]) + dist(w[t[1]], w[t[2]]) + dist(w[t[2]], w[t[0]])) / 3.0;
+  if (crossings_.crosses(t, kGatherPad * mean_edge, mesh_, near_)) return Verdict::Intersection;
+  if (overlaps_layer(t, frame, near_)) return Verdict::VertexFold;
   return Verdict::Accept;
 }
 

@@ -64,7 +64,7 @@ class TopologyJudge {
   };
   Frame frame_of(const Tri &t) const;
   bool faces_backwards(const Tri &t, const Frame &frame) const;
-  bool overlaps_layer(const Tri &t, const Frame &frame) const;
+  bool overlaps_layer(const Tri &t, const Frame &frame, const std::vector<uint32_t> &near) const;
   bool flatness_fails(const Tri &t, const uint32_t *sphere, std::size_t count) const;
 
   const PointSet &points_;
