@@ -399,7 +399,7 @@ void fill_loops(GrowthState &g, const std::function<void(double)> &tick) {
   // Fill; then open the pinches that filling could not resolve, widen the holes that could
   // not be closed by the faces along them (a bad neighbourhood often blocks the last
   // triangles), and fill again.
-  constexpr int kRounds = 4;
+  constexpr int kRounds = 6;
   for (int round = 0; round < kRounds; ++round) {
     LoopFiller filler(g);
     filler.run([&](double f) { tick((round + f) / kRounds); });

@@ -12,6 +12,9 @@ namespace {
 // A triangle whose largest angle exceeds this is a needle or a cap: its area is nearly zero
 // and its normal meaningless.
 const double kMaxCornerCos = std::cos(degrees_to_radians(175.0));
+// The loop module's last passes accept flatter triangles: a sliver closes a crack that no
+// better triangle can.
+const double kMaxCornerCosRelaxed = std::cos(degrees_to_radians(179.0));
 
 // A triangle whose normal is more than about 100 degrees from the mean normal of a fan it
 // joins faces backwards.
@@ -80,15 +83,15 @@ TopologyJudge::TopologyJudge(const PointSet &points, const Neighborhood &nb, con
       vertex_open_(degrees_to_radians(params.vertex_open_angle)),
       cos_normal_(std::cos(degrees_to_radians(params.max_normal_deviation))) {}
 
-bool TopologyJudge::degenerate(const Tri &t) const {
+bool TopologyJudge::degenerate(const Tri &t, bool relaxed) const {
+  const double limit = relaxed ? kMaxCornerCosRelaxed : kMaxCornerCos;
   const Vec3 &a = points_.work[t[0]], &b = points_.work[t[1]], &c = points_.work[t[2]];
   // A corner above the limit has a cosine below cos(limit).
   auto corner_cos = [](const Vec3 &p, const Vec3 &q, const Vec3 &r) {
     Vec3 u = q - p, v = r - p;
     return dot(u, v) / std::sqrt(norm2(u) * norm2(v));
   };
-  if (corner_cos(a, b, c) < kMaxCornerCos || corner_cos(b, c, a) < kMaxCornerCos ||
-      corner_cos(c, a, b) < kMaxCornerCos)
+  if (corner_cos(a, b, c) < limit || corner_cos(b, c, a) < limit || corner_cos(c, a, b) < limit)
     return true;
   return collinear(points_.exact[t[0]], points_.exact[t[1]], points_.exact[t[2]]);
 }
@@ -258,7 +261,7 @@ bool TopologyJudge::flatness_fails(const Tri &t, const uint32_t *sphere, std::si
 
 Verdict TopologyJudge::judge(const Tri &t, const uint32_t *sphere, std::size_t count,
                              bool relaxed) {
-  if (degenerate(t)) return Verdict::Degenerate;
+  if (degenerate(t, relaxed)) return Verdict::Degenerate;
   switch (mesh_.check(t)) {
     case TopologyVerdict::Ok:
       break;

@@ -46,7 +46,7 @@ class TopologyJudge {
   static void count(Verdict v, moa_stats &stats);
 
  private:
-  bool degenerate(const Tri &t) const;
+  bool degenerate(const Tri &t, bool relaxed) const;
   bool normal_deviates(const Tri &t) const;
   bool edge_folds(const Tri &t) const;
   bool vertex_folds(const Tri &t) const;
