@@ -47,4 +47,8 @@ void build_mesh(GrowthState &g, const std::function<void(double)> &tick);
 // Algorithm 2, the loop module (paper §3.5.2).
 void fill_loops(GrowthState &g, const std::function<void(double)> &tick);
 
+// Splits a triangle under each point left out, where the judgment allows; returns how many
+// points were taken in.
+std::size_t take_in_points(GrowthState &g);
+
 }  // namespace moa

@@ -408,6 +408,7 @@ void fill_loops(GrowthState &g, const std::function<void(double)> &tick) {
     g.stats.triangles_removed += removed;
     if (removed == 0) break;
   }
+  if (g.params.take_in_points != 0) take_in_points(g);
   g.stats.boundary_loops_after = LoopFiller(g).count_loops();
   tick(1.0);
 }
