@@ -69,7 +69,8 @@ std::size_t enforce_single_fans(std::size_t nv, const std::vector<Tri> &tris,
 }
 
 // Turns every closed component so that its signed volume is positive.
-void orient_outward(const GrowthState &g, std::vector<Tri> &tris, const std::vector<char> &alive) {
+void orient_outward(const PointSet &points, std::vector<Tri> &tris,
+                    const std::vector<char> &alive) {
   const std::size_t nf = tris.size();
   std::vector<uint32_t> comp(nf);
   std::iota(comp.begin(), comp.end(), 0u);
@@ -77,7 +78,7 @@ void orient_outward(const GrowthState &g, std::vector<Tri> &tris, const std::vec
     while (comp[x] != x) x = comp[x] = comp[comp[x]];
     return x;
   };
-  Incidence inc(g.points.size(), tris, alive);
+  Incidence inc(points.size(), tris, alive);
   std::vector<uint8_t> open(nf, 0);
   for (uint32_t f = 0; f < nf; ++f) {
     if (!alive[f]) continue;
@@ -100,8 +101,8 @@ void orient_outward(const GrowthState &g, std::vector<Tri> &tris, const std::vec
   std::vector<uint8_t> comp_open(nf, 0);
   for (uint32_t f = 0; f < nf; ++f) {
     if (!alive[f]) continue;
-    const Vec3 &a = g.points.work[tris[f][0]], &b = g.points.work[tris[f][1]],
-               &c = g.points.work[tris[f][2]];
+    const Vec3 &a = points.work[tris[f][0]], &b = points.work[tris[f][1]],
+               &c = points.work[tris[f][2]];
     volume[root(f)] += dot(a, cross(b, c));
     comp_open[root(f)] |= open[f];
   }
@@ -130,22 +131,24 @@ std::size_t count_boundary_edges(const std::vector<Tri> &tris) {
 
 }  // namespace
 
-std::vector<Tri> finish_mesh(GrowthState &g) {
-  const std::size_t nf = g.mesh.face_count();
-  std::vector<Tri> tris(nf);
-  std::vector<char> alive(nf, 1);
-  for (uint32_t f = 0; f < nf; ++f) {
-    tris[f] = g.mesh.oriented(f);
-    alive[f] = g.mesh.alive(f);
-  }
-  g.stats.triangles_removed += enforce_single_fans(g.points.size(), tris, alive);
-  orient_outward(g, tris, alive);
+std::vector<Tri> oriented_faces(MeshState &mesh) {
   std::vector<Tri> out;
-  out.reserve(nf);
-  for (uint32_t f = 0; f < nf; ++f)
-    if (alive[f]) out.push_back(tris[f]);
-  g.stats.boundary_edges = count_boundary_edges(out);
+  out.reserve(mesh.face_count());
+  for (uint32_t f = 0; f < mesh.face_count(); ++f)
+    if (mesh.alive(f)) out.push_back(mesh.oriented(f));
   return out;
+}
+
+void finish_mesh(const PointSet &points, std::vector<Tri> &faces, moa_stats &stats) {
+  std::vector<char> alive(faces.size(), 1);
+  stats.triangles_removed += enforce_single_fans(points.size(), faces, alive);
+  orient_outward(points, faces, alive);
+  std::size_t kept = 0;
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    if (alive[f]) faces[kept++] = faces[f];
+  faces.resize(kept);
+  faces.shrink_to_fit();
+  stats.boundary_edges = count_boundary_edges(faces);
 }
 
 }  // namespace moa

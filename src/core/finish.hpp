@@ -4,11 +4,18 @@
 
 #include <vector>
 
-#include "core/growth_state.hpp"
+#include "core/mesh_state.hpp"
+#include "core/point_set.hpp"
+#include "moa/moa.h"
 
 namespace moa {
 
-// Oriented faces in internal indices, ready to be mapped to the caller's indices.
-std::vector<Tri> finish_mesh(GrowthState &g);
+// The alive faces of the grown mesh, each as currently oriented.
+std::vector<Tri> oriented_faces(MeshState &mesh);
+
+// Turns closed components outward and removes, at any vertex whose faces still form several
+// fans, all but the largest fan. `faces` are internal indices, ready to be mapped to the
+// caller's indices afterwards.
+void finish_mesh(const PointSet &points, std::vector<Tri> &faces, moa_stats &stats);
 
 }  // namespace moa

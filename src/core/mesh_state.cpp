@@ -9,7 +9,7 @@ namespace moa {
 
 EdgeMap::EdgeMap(std::size_t expected_edges) {
   std::size_t cap = 1024;
-  while (cap < expected_edges * 2) cap *= 2;
+  while (cap * 7 < expected_edges * 10) cap *= 2;  // at most 70 % full
   slots_.assign(cap, Slot{~0ULL, {kNone, kNone}});
   shift_ = 64;
   for (std::size_t c = cap; c > 1; c >>= 1) --shift_;
@@ -34,7 +34,7 @@ const EdgeMap::Slot *EdgeMap::find(uint32_t u, uint32_t v) const {
 }
 
 EdgeMap::Slot &EdgeMap::insert(uint32_t u, uint32_t v) {
-  if ((used_ + 1) * 2 > slots_.size()) grow();
+  if ((used_ + 1) * 10 > slots_.size() * 7) grow();
   uint64_t key = key_of(u, v);
   std::size_t mask = slots_.size() - 1;
   for (std::size_t i = index_of(key);; i = (i + 1) & mask) {
@@ -182,7 +182,6 @@ uint32_t MeshState::add(const Tri &t) {
   alive_.push_back(1);
   parent_.push_back(id);
   flip_.push_back(0);
-  rank_.push_back(0);
   for (int i = 0; i < 3; ++i) {
     uint32_t u = t[i], v = t[(i + 1) % 3];
     EdgeMap::Slot &s = edges_.insert(u, v);
@@ -198,10 +197,10 @@ uint32_t MeshState::add(const Tri &t) {
       uint32_t rt = find(id, pt), rg = find(g, pg);
       if (rt != rg) {
         uint8_t x = uint8_t(uint32_t(mismatch(t, g)) ^ pt ^ pg);
-        if (rank_[rt] < rank_[rg]) std::swap(rt, rg);
+        // Link the younger class under the older: path compression keeps chains short.
+        if (rt > rg) std::swap(rt, rg);
         parent_[rg] = rt;
         flip_[rg] = x;
-        if (rank_[rt] == rank_[rg]) ++rank_[rt];
       }
     }
   }
@@ -235,7 +234,7 @@ void MeshState::remove(uint32_t f) {
 
 std::size_t MeshState::memory_bytes() const {
   std::size_t bytes = faces_.capacity() * sizeof(Tri) + parent_.capacity() * 4 + flip_.capacity() +
-                      rank_.capacity() * 4 + edges_.memory_bytes() + vertex_edges_.capacity() * 4;
+                      edges_.memory_bytes() + vertex_edges_.capacity() * 4;
   for (const auto &v : vertex_faces_) bytes += sizeof(v) + v.capacity() * 4;
   return bytes;
 }

@@ -89,7 +89,6 @@ class MeshState {
   std::vector<uint8_t> alive_;
   std::vector<uint32_t> parent_;
   std::vector<uint8_t> flip_;  // parity to parent
-  std::vector<uint32_t> rank_;
   EdgeMap edges_;
   std::vector<std::vector<uint32_t>> vertex_faces_;
   std::vector<uint32_t> vertex_edges_;  // edges at the vertex with at least one face

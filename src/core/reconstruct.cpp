@@ -54,21 +54,30 @@ Result run_stages(const double *xyz, std::size_t count, const Params &params,
                                       [&](double f) { report(MOA_STAGE_NEIGHBORS, f); });
   st.stage_ms[MOA_STAGE_NEIGHBORS] = ms_since(t);
 
-  GrowthState g(points, nb, params, 2.0 * median_spacing(nb), st);
+  std::vector<Tri> faces;
+  {
+    // The growth structures (mesh bookkeeping, Embree scene) are freed before the finish
+    // stage allocates its own: the peak memory is the larger of the two, not their sum.
+    GrowthState g(points, nb, params, 2.0 * median_spacing(nb), st);
 
-  t = Clock::now();
-  report(MOA_STAGE_MESH, 0.0);
-  build_mesh(g, [&](double f) { report(MOA_STAGE_MESH, f); });
-  st.stage_ms[MOA_STAGE_MESH] = ms_since(t);
+    t = Clock::now();
+    report(MOA_STAGE_MESH, 0.0);
+    build_mesh(g, [&](double f) { report(MOA_STAGE_MESH, f); });
+    st.stage_ms[MOA_STAGE_MESH] = ms_since(t);
 
-  t = Clock::now();
-  report(MOA_STAGE_LOOPS, 0.0);
-  fill_loops(g, [&](double f) { report(MOA_STAGE_LOOPS, f); });
-  st.stage_ms[MOA_STAGE_LOOPS] = ms_since(t);
+    t = Clock::now();
+    report(MOA_STAGE_LOOPS, 0.0);
+    fill_loops(g, [&](double f) { report(MOA_STAGE_LOOPS, f); });
+    st.stage_ms[MOA_STAGE_LOOPS] = ms_since(t);
+
+    faces = oriented_faces(g.mesh);
+    st.embree_rebuilds = g.crossings.rebuilds();
+    st.intersection_ms = g.crossings.milliseconds();
+  }
 
   t = Clock::now();
   report(MOA_STAGE_FINISH, 0.0);
-  std::vector<Tri> faces = finish_mesh(g);
+  finish_mesh(points, faces, st);
   result.triangles.resize(faces.size() * 3);
   std::vector<char> used(points.size(), 0);
   for (std::size_t f = 0; f < faces.size(); ++f)
@@ -79,8 +88,6 @@ Result run_stages(const double *xyz, std::size_t count, const Params &params,
   st.triangles = faces.size();
   st.used_points = std::size_t(std::count(used.begin(), used.end(), 1));
   st.unused_points = points.size() - st.used_points;
-  st.embree_rebuilds = g.crossings.rebuilds();
-  st.intersection_ms = g.crossings.milliseconds();
   report(MOA_STAGE_FINISH, 1.0);
   st.stage_ms[MOA_STAGE_FINISH] = ms_since(t);
   st.total_ms = ms_since(total);
