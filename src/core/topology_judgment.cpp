@@ -62,6 +62,11 @@ bool triangles_overlap_2d(const double (&p)[3][2], const double (&q)[3][2]) {
   return true;
 }
 
+double cosine(const Vec3 &u, const Vec3 &v) {
+  double d = std::sqrt(norm2(u) * norm2(v));
+  return d > 0 ? dot(u, v) / d : 1.0;
+}
+
 uint32_t third_vertex(const Tri &t, uint32_t u, uint32_t v) {
   for (uint32_t x : t)
     if (x != u && x != v) return x;
@@ -79,8 +84,8 @@ TopologyJudge::TopologyJudge(const PointSet &points, const Neighborhood &nb, con
       flatness_a_(params.flatness_a),
       flatness_c_(params.flatness_c),
       cos_edge_fold_(std::cos(degrees_to_radians(params.edge_fold_angle))),
-      vertex_fold_(degrees_to_radians(params.vertex_fold_angle)),
-      vertex_open_(degrees_to_radians(params.vertex_open_angle)),
+      cos_vertex_fold_(std::cos(degrees_to_radians(params.vertex_fold_angle))),
+      cos_vertex_open_(std::cos(degrees_to_radians(params.vertex_open_angle))),
       cos_normal_(std::cos(degrees_to_radians(params.max_normal_deviation))) {}
 
 bool TopologyJudge::degenerate(const Tri &t, bool relaxed) const {
@@ -141,9 +146,11 @@ bool TopologyJudge::vertex_folds(const Tri &t) const {
         if (x != ip) (ic == kNone ? ic : id) = x;
       const Vec3 &C = points_.work[ic], &D = points_.work[id];
       Vec3 N = centroid(P, C, D);
-      if (angle_between(M - P, N - P) >= vertex_fold_) continue;
+      // Angles compared through their cosines: alpha < limit <=> cos(alpha) > cos(limit).
+      if (cosine(M - P, N - P) <= cos_vertex_fold_) continue;
       Vec3 O = (A + B + C + D) * 0.25;
-      if (angle_at(O, A, B) > vertex_open_ && angle_at(O, C, D) > vertex_open_) return true;
+      if (cosine(A - O, B - O) < cos_vertex_open_ && cosine(C - O, D - O) < cos_vertex_open_)
+        return true;
     }
   }
   return false;

@@ -72,7 +72,7 @@ class TopologyJudge {
   MeshState &mesh_;
   CrossingIndex &crossings_;
   double flatness_a_, flatness_c_;
-  double cos_edge_fold_, vertex_fold_, vertex_open_, cos_normal_;
+  double cos_edge_fold_, cos_vertex_fold_, cos_vertex_open_, cos_normal_;
   mutable std::vector<uint32_t> near_;
 };
 
