@@ -13,12 +13,12 @@ struct Params {
   double threads = 0;                // worker threads, 0 = all cores
   double neighbors = 20;             // k of the k-nearest-neighbour graph
   double sphere_radius = 2.0;        // R of the candidate sphere, in units of local spacing
-  double flatness_a = 10.0;          // T threshold a
+  double flatness_a = 30.0;          // T threshold a
   double flatness_c = 1.0;           // T exponent c
   double edge_fold_angle = 30;       // minimum alpha between faces sharing an edge
   double vertex_fold_angle = 15;     // vertex alpha below which beta/gamma are examined
   double vertex_open_angle = 120;    // beta and gamma above which a vertex pair is a fold
-  double max_normal_deviation = 75;  // triangle normal vs local plane normal
+  double max_normal_deviation = 60;  // triangle normal vs local plane normal
   double hole_size = 5;              // widest hole the loop module closes, in units of spacing
   double solid = 0;                  // 1: close every hole regardless of size
   double take_in_points = 1;         // 1: insert left-out points in the loop/finish stages
