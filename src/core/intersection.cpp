@@ -86,7 +86,8 @@ void CrossingIndex::rebuild(MeshState &mesh) {
   auto device = static_cast<RTCDevice>(device_);
   if (scene_) rtcReleaseScene(static_cast<RTCScene>(scene_));
   RTCScene scene = rtcNewScene(device);
-  rtcSetSceneFlags(scene, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION | RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneFlags(scene, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION | RTC_SCENE_FLAG_ROBUST |
+                              RTC_SCENE_FLAG_COMPACT);
   rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_MEDIUM);
   RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
   rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, vertices_.data(),
