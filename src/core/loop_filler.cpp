@@ -39,10 +39,10 @@ struct HoleEdge {
 constexpr std::size_t kMaxLoopCandidates = 24;
 // Candidate lists longer than this are searched through the k-NN graph instead of scanned.
 constexpr std::size_t kMaxScannedPool = 128;
-constexpr int kPasses = 4;
+constexpr int kPasses = 4;  // the last two relax the local-plane and fan tests
 // Loops longer than this are borders unless the solid setting closes everything: measuring
 // their width costs a quadratic number of distances.
-constexpr std::size_t kMaxMeasuredLoop = 4096;  // the last two relax the local-plane tests
+constexpr std::size_t kMaxMeasuredLoop = 4096;
 
 class LoopFiller {
  public:
