@@ -257,6 +257,30 @@ class LoopFiller {
            try_candidates(u, v, z, side, loop.outer, loop_id, relaxed);
   }
 
+  // Does t close a hole, taking all three of its sides from faces already there?
+  bool closes_hole(const Tri &t) const {
+    for (int i = 0; i < 3; ++i) {
+      uint32_t fs[2];
+      if (g_.mesh.edge_faces(t[i], t[(i + 1) % 3], fs) != 1) return false;
+    }
+    return true;
+  }
+
+  // The last triangle of a hole may be refused because a corner carries a second fan (a
+  // neighbouring fill touched it): closing would make a disk and a fan meet at one vertex.
+  // The second fan goes, the hole closes, and the next round refills the space the fan left.
+  Verdict clear_pinch_and_retry(const Tri &t) {
+    uint32_t v = g_.mesh.fan_closing_blocked(t);
+    if (v == kNone) return Verdict::Manifold;
+    uint32_t fs[2];
+    uint32_t w = t[0] == v ? t[1] : t[0];
+    g_.mesh.edge_faces(v, w, fs);
+    g_.stats.triangles_removed += g_.mesh.remove_other_fans(v, fs[0]);
+    Verdict verdict = g_.judge.judge(t, nullptr, 0, true);
+    TopologyJudge::count(verdict, g_.stats);
+    return verdict;
+  }
+
   // Once a triangle joins an island to the loop around it, the two lists become one.
   void merge_loop_of(uint32_t vertex, uint32_t loop_id) {
     auto it = loop_of_vertex_.find(vertex);
@@ -327,6 +351,8 @@ class LoopFiller {
       if (joins_another_loop(t, loop_id)) continue;
       Verdict verdict = g_.judge.judge(t, sphere_.data(), relaxed ? 0 : sphere_.size(), relaxed);
       TopologyJudge::count(verdict, g_.stats);
+      if (verdict == Verdict::Manifold && relaxed && closes_hole(t))
+        verdict = clear_pinch_and_retry(t);
       if (verdict != Verdict::Accept) continue;
       g_.add_face(t);
       ++g_.stats.triangles_loops;

@@ -232,6 +232,32 @@ void MeshState::remove(uint32_t f) {
   }
 }
 
+uint32_t MeshState::fan_closing_blocked(const Tri &t) const {
+  for (int i = 0; i < 3; ++i) {
+    uint32_t v = t[i], a = t[(i + 1) % 3], b = t[(i + 2) % 3], fs[2];
+    if (fan_closed(v) || edge_faces(v, a, fs) != 1 || edge_faces(v, b, fs) != 1) continue;
+    if (same_chain(v, a, b) && vertex_edges_[v] - uint32_t(vertex_faces_[v].size()) != 1) return v;
+  }
+  return kNone;
+}
+
+std::size_t MeshState::remove_other_fans(uint32_t v, uint32_t keep) {
+  // Collect keep's fan by crossing the interior edges at v, then drop every other face at v.
+  std::vector<uint32_t> fan{keep}, others;
+  for (std::size_t k = 0; k < fan.size(); ++k)
+    for (uint32_t x : faces_[fan[k]]) {
+      if (x == v) continue;
+      uint32_t fs[2];
+      if (edge_faces(v, x, fs) != 2) continue;
+      for (uint32_t g : fs)
+        if (std::find(fan.begin(), fan.end(), g) == fan.end()) fan.push_back(g);
+    }
+  for (uint32_t f : vertex_faces_[v])
+    if (std::find(fan.begin(), fan.end(), f) == fan.end()) others.push_back(f);
+  for (uint32_t f : others) remove(f);
+  return others.size();
+}
+
 std::size_t MeshState::memory_bytes() const {
   std::size_t bytes = faces_.capacity() * sizeof(Tri) + parent_.capacity() * 4 + flip_.capacity() +
                       edges_.memory_bytes() + vertex_edges_.capacity() * 4;

@@ -69,6 +69,11 @@ class MeshState {
   uint32_t add(const Tri &t);
   // Removes face f; its index is never reused.
   void remove(uint32_t f);
+  // The corner of t where adding t would close one fan of a vertex that has other fans too
+  // (the one rule of check() that the loop module can cure), or kNone.
+  uint32_t fan_closing_blocked(const Tri &t) const;
+  // Removes the faces around v that are not in the fan of face `keep`; returns how many.
+  std::size_t remove_other_fans(uint32_t v, uint32_t keep);
   // Separate fans around v (0 for an unused vertex, 1 for a disk or a half-disk).
   uint32_t fan_count(uint32_t v) const {
     if (vertex_faces_[v].empty()) return 0;

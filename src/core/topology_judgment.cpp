@@ -36,6 +36,8 @@ bool covers(const Vec3 &a, const Vec3 &b, const Vec3 &c, const Vec3 &n, const Ve
 // this many mean edge lengths (facing the same way within one component) or than the other.
 constexpr double kSameFacingLayer = 1.0;
 constexpr double kAnyLayer = 0.3;
+// A triangle whose smallest height is below this fraction of its longest edge is a sliver.
+constexpr double kSliverHeight = 0.15;
 // Faces are searched within this many mean edge lengths of t's bounding box.
 constexpr double kGatherPad = 0.5;
 // Triangles are shrunk this much toward their centres before the overlap test, so that
@@ -87,6 +89,13 @@ TopologyJudge::TopologyJudge(const PointSet &points, const Neighborhood &nb, con
       cos_vertex_fold_(std::cos(degrees_to_radians(params.vertex_fold_angle))),
       cos_vertex_open_(std::cos(degrees_to_radians(params.vertex_open_angle))),
       cos_normal_(std::cos(degrees_to_radians(params.max_normal_deviation))) {}
+
+bool TopologyJudge::is_sliver(const Tri &t) const {
+  const Vec3 &a = points_.work[t[0]], &b = points_.work[t[1]], &c = points_.work[t[2]];
+  double longest2 = std::max({norm2(b - a), norm2(c - b), norm2(a - c)});
+  // Twice the area over the longest edge is the smallest height; compare it with that edge.
+  return norm(cross(b - a, c - a)) < kSliverHeight * longest2;
+}
 
 bool TopologyJudge::degenerate(const Tri &t, bool relaxed) const {
   const double limit = relaxed ? kMaxCornerCosRelaxed : kMaxCornerCos;
@@ -286,7 +295,9 @@ Verdict TopologyJudge::judge(const Tri &t, const uint32_t *sphere, std::size_t c
   double mean_edge =
       (dist(w[t[0]], w[t[1]]) + dist(w[t[1]], w[t[2]]) + dist(w[t[2]], w[t[0]])) / 3.0;
   if (crossings_.crosses(t, kGatherPad * mean_edge, mesh_, near_)) return Verdict::Intersection;
-  if (overlaps_layer(t, frame, near_)) return Verdict::VertexFold;
+  // A sliver's plane is too ill-defined to project onto: on the relaxed passes it is left to
+  // the exact crossing test alone.
+  if (!(relaxed && is_sliver(t)) && overlaps_layer(t, frame, near_)) return Verdict::VertexFold;
   return Verdict::Accept;
 }
 

@@ -47,6 +47,7 @@ class TopologyJudge {
 
  private:
   bool degenerate(const Tri &t, bool relaxed) const;
+  bool is_sliver(const Tri &t) const;
   bool normal_deviates(const Tri &t) const;
   bool edge_folds(const Tri &t) const;
   bool vertex_folds(const Tri &t) const;
