@@ -3,13 +3,21 @@
 #include <cstdarg>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <string>
 
 namespace moa::capi {
 namespace {
 
 // The only global state of the library: one message per thread, for calls without a context.
-thread_local std::string t_error;
+// A plain array: a thread_local with a destructor makes glibc allocate on the thread's first
+// use and abort when that fails, which is exactly when an out-of-memory error is reported.
+thread_local char t_error[512];
+
+void store(char *slot, std::size_t size, const char *function, const char *prefix,
+           const char *what) noexcept {
+  std::snprintf(slot, size, "%s: %s%s", function, prefix, what);  // truncates, never fails
+}
 
 void store(std::string &slot, const char *function, const char *prefix,
            const char *what) noexcept {
@@ -55,14 +63,10 @@ void require_idle(const moa_ctx &ctx) {
 }
 
 void raise(moa_status code, const char *format, ...) {
+  char message[1024];  // on the stack: argument errors are reported even with no heap left
   va_list args;
   va_start(args, format);
-  va_list copy;
-  va_copy(copy, args);
-  const int n = std::vsnprintf(nullptr, 0, format, copy);
-  va_end(copy);
-  std::string message(n > 0 ? static_cast<std::size_t>(n) : 0, '\0');
-  if (n > 0) std::vsnprintf(message.data(), message.size() + 1, format, args);
+  std::vsnprintf(message, sizeof message, format, args);
   va_end(args);
   throw Error(code, message);
 }
@@ -70,10 +74,22 @@ void raise(moa_status code, const char *format, ...) {
 moa_status fail(const moa_ctx *ctx, moa_status code, const char *function,
                 const char *what) noexcept {
   const char *prefix = code == MOA_ERROR_INTERNAL ? "internal error (please report it): " : "";
-  store(ctx != nullptr ? ctx->last_error : t_error, function, prefix, what);
+  if (ctx != nullptr)
+    store(ctx->last_error, function, prefix, what);
+  else
+    store(t_error, sizeof t_error, function, prefix, what);
   return code;
 }
 
-const char *thread_error() noexcept { return t_error.c_str(); }
+moa_status fail(const moa_ctx *ctx, const char *function, const std::exception &e) noexcept {
+  // TBB reports a worker thread it could not start as a runtime_error; under a memory cap
+  // that is an out-of-memory condition, which the caller can act on.
+  if (std::strstr(e.what(), "pthread_create") != nullptr)
+    return fail(ctx, MOA_ERROR_OUT_OF_MEMORY, function,
+                "out of memory (could not start a worker thread)");
+  return fail(ctx, MOA_ERROR_INTERNAL, function, e.what());
+}
+
+const char *thread_error() noexcept { return t_error; }
 
 }  // namespace moa::capi

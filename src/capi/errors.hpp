@@ -35,6 +35,9 @@ void require_idle(const moa_ctx &ctx);
 moa_status fail(const moa_ctx *ctx, moa_status code, const char *function,
                 const char *what) noexcept;
 
+// Records a standard exception: INTERNAL, or OUT_OF_MEMORY when no thread could be started.
+moa_status fail(const moa_ctx *ctx, const char *function, const std::exception &e) noexcept;
+
 // The thread-local message read by moa_last_error(NULL).
 const char *thread_error() noexcept;
 
@@ -56,7 +59,7 @@ const char *thread_error() noexcept;
                              "out of memory");                                                 \
   }                                                                                            \
   catch (const std::exception &e) {                                                            \
-    return ::moa::capi::fail(moa_capi_error_ctx_, MOA_ERROR_INTERNAL, __func__, e.what());     \
+    return ::moa::capi::fail(moa_capi_error_ctx_, __func__, e);                                \
   }                                                                                            \
   catch (...) {                                                                                \
     return ::moa::capi::fail(moa_capi_error_ctx_, MOA_ERROR_INTERNAL, __func__,                \

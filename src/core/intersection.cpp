@@ -9,6 +9,8 @@
 #include <chrono>
 #include <cmath>
 #include <new>
+#include <memory>
+#include <mutex>
 
 #include "core/predicates.hpp"
 
@@ -40,6 +42,18 @@ uint64_t cell_key(int64_t x, int64_t y, int64_t z) {
   return (uint64_t(x & 0x1fffff) << 42) | (uint64_t(y & 0x1fffff) << 21) | uint64_t(z & 0x1fffff);
 }
 
+// One Embree device for the whole process, made on first use and never released. Devices are
+// thread-safe and costly to make; and releasing one after an allocation failed inside Embree
+// can hang in its tasking system, which would turn an out-of-memory error into a hung host.
+RTCDevice shared_device() {
+  static std::mutex mutex;
+  static RTCDevice device = nullptr;
+  std::lock_guard<std::mutex> lock(mutex);
+  if (!device) device = rtcNewDevice("verbose=0");  // a failure is retried on the next run
+  if (!device) throw std::bad_alloc();
+  return device;
+}
+
 }  // namespace
 
 CrossingIndex::CrossingIndex(const PointSet &points, double cell_size)
@@ -50,13 +64,11 @@ CrossingIndex::CrossingIndex(const PointSet &points, double cell_size)
     vertices_[3 * i + 1] = float(points.work[i].y);
     vertices_[3 * i + 2] = float(points.work[i].z);
   }
-  device_ = rtcNewDevice("verbose=0");
-  if (!device_) throw std::bad_alloc();
+  device_ = shared_device();
 }
 
 CrossingIndex::~CrossingIndex() {
   if (scene_) rtcReleaseScene(static_cast<RTCScene>(scene_));
-  if (device_) rtcReleaseDevice(static_cast<RTCDevice>(device_));
 }
 
 void CrossingIndex::bounds(const Tri &t, Vec3 &lo, Vec3 &hi) const {
@@ -85,26 +97,31 @@ void CrossingIndex::grid_insert(uint32_t f, const Tri &t) {
 void CrossingIndex::rebuild(MeshState &mesh) {
   auto device = static_cast<RTCDevice>(device_);
   if (scene_) rtcReleaseScene(static_cast<RTCScene>(scene_));
-  RTCScene scene = rtcNewScene(device);
-  rtcSetSceneFlags(scene, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION | RTC_SCENE_FLAG_ROBUST |
-                              RTC_SCENE_FLAG_COMPACT);
-  rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_MEDIUM);
-  RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-  rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, vertices_.data(),
-                             0, 3 * sizeof(float), points_.size());
+  scene_ = nullptr;  // no stale handle if building the new scene fails below
+  // Owns the new scene and geometry until they are complete, so that a failed allocation
+  // releases them; Embree's device cannot be released while they are alive.
+  std::unique_ptr<RTCSceneTy, void (*)(RTCScene)> scene(rtcNewScene(device), rtcReleaseScene);
+  std::unique_ptr<RTCGeometryTy, void (*)(RTCGeometry)> geom(
+      rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE), rtcReleaseGeometry);
+  if (!scene || !geom) throw std::bad_alloc();
+  rtcSetSceneFlags(scene.get(), RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION | RTC_SCENE_FLAG_ROBUST |
+                                    RTC_SCENE_FLAG_COMPACT);
+  rtcSetSceneBuildQuality(scene.get(), RTC_BUILD_QUALITY_MEDIUM);
+  rtcSetSharedGeometryBuffer(geom.get(), RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                             vertices_.data(), 0, 3 * sizeof(float), points_.size());
   const std::size_t count = mesh.face_count();
   auto *idx = static_cast<uint32_t *>(rtcSetNewGeometryBuffer(
-      geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), count));
+      geom.get(), RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), count));
   if (!idx) throw std::bad_alloc();
   for (std::size_t f = 0; f < count; ++f)  // removed faces become degenerate, which Embree skips
     for (int k = 0; k < 3; ++k)
       idx[3 * f + k] = mesh.alive(uint32_t(f)) ? mesh.stored(uint32_t(f))[k] : 0;
-  rtcCommitGeometry(geom);
-  rtcAttachGeometry(scene, geom);
-  rtcReleaseGeometry(geom);
-  rtcCommitScene(scene);
+  rtcCommitGeometry(geom.get());
+  rtcAttachGeometry(scene.get(), geom.get());
+  geom.reset();  // the scene holds it now
+  rtcCommitScene(scene.get());
   if (rtcGetDeviceError(device) != RTC_ERROR_NONE) throw std::bad_alloc();
-  scene_ = scene;
+  scene_ = scene.release();
   committed_ = uint32_t(count);
   grid_.clear();
   oversized_.clear();

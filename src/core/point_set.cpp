@@ -113,12 +113,17 @@ PointSet prepare_points(const double *xyz, std::size_t count) {
   }
   tbb::parallel_sort(keyed.begin(), keyed.end());
 
+  // The exact predicates multiply up to three coordinate differences: at extents far from 1
+  // those products underflow or overflow and their signs are lost. Scaling by a power of two is
+  // exact and keeps every sign, so bring such clouds to an extent near 1.
+  const int shift = (extent < 0x1p-100 || extent > 0x1p100) ? -std::ilogb(extent) : 0;
+
   ps.exact.resize(keyed.size());
   ps.work.resize(keyed.size());
   ps.original.resize(keyed.size());
   for (std::size_t k = 0; k < keyed.size(); ++k) {
     Vec3 p = at(keyed[k].second);
-    ps.exact[k] = p;
+    ps.exact[k] = {std::ldexp(p.x, shift), std::ldexp(p.y, shift), std::ldexp(p.z, shift)};
     ps.work[k] = (p - center) * (1.0 / diag);
     ps.original[k] = keyed[k].second;
   }

@@ -11,7 +11,7 @@
 namespace moa {
 
 struct PointSet {
-  std::vector<Vec3> exact;         // caller's coordinates, internal order: exact predicates
+  std::vector<Vec3> exact;         // caller's coordinates × 2^k, internal order: exact predicates
   std::vector<Vec3> work;          // centred and scaled to unit diagonal: floating geometry
   std::vector<uint32_t> original;  // internal index -> caller's index (first occurrence)
   std::size_t input_count = 0;

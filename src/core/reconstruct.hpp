@@ -3,6 +3,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <exception>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -14,13 +16,20 @@
 namespace moa {
 
 // The core's error type; the C ABI turns its code into the returned moa_status.
-class Error : public std::runtime_error {
+// The message lives in the exception itself: reporting an error, even "out of memory" or a
+// NULL argument with the heap exhausted, must not need the heap.
+class Error : public std::exception {
  public:
-  Error(moa_status code, const std::string &message) : std::runtime_error(message), code_(code) {}
-  moa_status code() const { return code_; }
+  Error(moa_status code, const char *message) noexcept : code_(code) {
+    std::snprintf(message_, sizeof message_, "%s", message);
+  }
+  Error(moa_status code, const std::string &message) noexcept : Error(code, message.c_str()) {}
+  moa_status code() const noexcept { return code_; }
+  const char *what() const noexcept override { return message_; }
 
  private:
   moa_status code_;
+  char message_[1024];
 };
 
 // Thrown from inside the core when the progress callback asks to stop.
