@@ -5,7 +5,7 @@
 set -euo pipefail
 
 packages=(build-essential cmake pkgconf libembree-dev libtbb-dev libnanoflann-dev
-          libeigen3-dev libgmp-dev libcmocka-dev)
+          libeigen3-dev libgmp-dev libcmocka-dev libpng-dev)
 if [[ "${1:-}" == "--bindings" ]]; then
   packages+=(swig mono-devel default-jdk-headless lua5.4 liblua5.4-dev)
 fi

@@ -1,18 +1,22 @@
 // `moa check`: reports what a mesh is (the output contract C1-C5, topology, angles). It reports
 // and does not judge: the exit code is 0 whether or not the mesh is clean.
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <iostream>
 #include <string>
 #include <vector>
 
 #include "cli/cli.hpp"
 #include "io/io.hpp"
+#include "quality/markdown.hpp"
 #include "quality/quality.hpp"
+#include "render/render.hpp"
 
 namespace moa::cli {
 
 const char *const kCheckHelp =
-    "Usage: moa check MESH [--points INPUT] [--json]\n"
+    "Usage: moa check MESH [--points INPUT] [--json] [--report REPORT.md]\n"
     "\n"
     "Analyses the triangle mesh MESH (.ply .off .obj .stl) and reports: vertex, triangle and\n"
     "edge counts; closed or not, boundary edges and loops; components, Euler characteristic\n"
@@ -23,12 +27,42 @@ const char *const kCheckHelp =
     "Options:\n"
     "      --points INPUT   also count the points of INPUT that are vertices of the mesh\n"
     "      --json           print one JSON object instead of text\n"
+    "      --report REPORT.md\n"
+    "                       also write the report as a Markdown page, with the histogram of\n"
+    "                       the triangles' smallest angles beside it (REPORT_angles.png)\n"
     "  -h, --help           this text\n"
     "\n"
-    "Exits with 0 whether or not the mesh is clean; non-zero only when a file cannot be read.\n";
+    "Exits with 0 whether or not the mesh is clean; non-zero only when a file cannot be read\n"
+    "or written.\n";
+
+namespace {
+
+// The Markdown report and, beside it, its histogram picture (REPORT.md -> REPORT_angles.png).
+void write_report(const std::string &path, const std::string &mesh_path, const MeshReport &r) {
+  std::string stem = path;
+  const size_t slash = stem.find_last_of('/'), dot = stem.find_last_of('.');
+  if (dot != std::string::npos && (slash == std::string::npos || dot > slash)) stem.erase(dot);
+  const std::string image = stem + "_angles.png";
+  const render::Image chart = render::plot_histogram(
+      std::vector<size_t>(r.min_angle_histogram.begin(), r.min_angle_histogram.end()), 0, 5);
+  try {
+    render::write_png(image, chart);
+  } catch (const render::RenderError &e) {
+    throw CliError(kExitOutput, about_file(image, e.what()));
+  }
+  const std::string text =
+      report_to_markdown(r, mesh_path, image.substr(image.find_last_of('/') + 1));
+  std::FILE *f = std::fopen(path.c_str(), "w");
+  if (!f) throw CliError(kExitOutput, path + ": cannot write: " + std::strerror(errno));
+  const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+  if (std::fclose(f) != 0 || !ok)
+    throw CliError(kExitOutput, path + ": cannot write: " + std::strerror(errno));
+}
+
+}  // namespace
 
 int run_check(int argc, char **argv) {
-  std::string mesh_path, points_path;
+  std::string mesh_path, points_path, report_path;
   bool json = false;
   ArgWalker args(argc, argv, "check");
   while (args.next()) {
@@ -42,6 +76,8 @@ int run_check(int argc, char **argv) {
       points_path = args.value();
     } else if (args.is(nullptr, "--json")) {
       json = true;
+    } else if (args.is(nullptr, "--report")) {
+      report_path = args.value();
     } else {
       args.unknown();
     }
@@ -78,6 +114,7 @@ int run_check(int argc, char **argv) {
     print_report(std::cout, report);
   }
   std::cout.flush();
+  if (!report_path.empty()) write_report(report_path, mesh_path, report);
   return kExitOk;
 }
 

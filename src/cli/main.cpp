@@ -10,6 +10,11 @@
 #include "moa/moa.h"
 
 namespace moa::cli {
+
+// Defined in render.cpp.
+int run_render(int argc, char **argv);
+extern const char *const kRenderHelp;
+
 namespace {
 
 const char *const kHelp =
@@ -17,9 +22,11 @@ const char *const kHelp =
     "\n"
     "Usage:\n"
     "  moa reconstruct INPUT -o OUTPUT [--param NAME=VALUE]... [--stats FILE.json]\n"
-    "                  [--ascii] [--quiet]\n"
+    "                  [--render IMAGE.png] [--ascii] [--quiet]\n"
     "  moa params\n"
-    "  moa check MESH [--points INPUT] [--json]\n"
+    "  moa check MESH [--points INPUT] [--json] [--report REPORT.md]\n"
+    "  moa render MESH -o IMAGE.png [--view front|back|left|right|top|bottom|iso]\n"
+    "             [--size WxH] [--wireframe] [--highlight-defects]\n"
     "  moa --version\n"
     "  moa --help | moa COMMAND --help | moa help COMMAND\n"
     "\n"
@@ -28,9 +35,11 @@ const char *const kHelp =
     "  params       list the reconstruction parameters: default, range, description\n"
     "  check        analyse a mesh: counts, closedness, genus, manifoldness, orientation,\n"
     "               self-intersections, degenerate faces, triangle angles\n"
+    "  render       draw a mesh into a PNG picture, optionally with its wireframe, its\n"
+    "               boundary edges and its defective faces\n"
     "\n"
     "Files: points are read from .xyz .txt .pts .ply .off .obj; meshes are read and written\n"
-    "as .ply .off .obj .stl.\n"
+    "as .ply .off .obj .stl; pictures are written as .png.\n"
     "\n"
     "Exit status:\n"
     "  0  success (for check: whether or not the mesh is clean)\n"
@@ -40,7 +49,8 @@ const char *const kHelp =
     "  3  input file error: missing, unreadable or malformed, or points that cannot be\n"
     "     reconstructed (too few, non-finite, all collinear)\n"
     "  4  reconstruction error (including an interrupted run)\n"
-    "  5  output file error: the mesh or the statistics cannot be written\n"
+    "  5  output file error: the mesh, the statistics, the picture or the report cannot be\n"
+    "     written\n"
     "Errors are reported on one line of stderr: \"moa: FILE: what is wrong\".\n";
 
 // One line, whatever the message holds.
@@ -55,6 +65,7 @@ const char *help_of(const std::string &command) {
   if (command == "reconstruct") return kReconstructHelp;
   if (command == "params") return kParamsHelp;
   if (command == "check") return kCheckHelp;
+  if (command == "render") return kRenderHelp;
   return nullptr;
 }
 
@@ -82,6 +93,7 @@ int run(int argc, char **argv) {
   if (command == "reconstruct") return run_reconstruct(argc - 1, argv + 1);
   if (command == "params") return run_params(argc - 1, argv + 1);
   if (command == "check") return run_check(argc - 1, argv + 1);
+  if (command == "render") return run_render(argc - 1, argv + 1);
   if (!command.empty() && command[0] == '-')
     throw CliError(kExitUsage, "unknown option '" + command + "' (see moa --help)");
   throw CliError(kExitUsage, "unknown command '" + command + "' (see moa --help)");

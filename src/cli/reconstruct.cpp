@@ -31,11 +31,17 @@ const char *const kReconstructHelp =
     "  -o, --output FILE        the mesh to write (required)\n"
     "  -p, --param NAME=VALUE   set a parameter; repeatable (see moa params)\n"
     "      --stats FILE.json    write the run's statistics and timings as one JSON object\n"
+    "      --render IMAGE.png   also draw the mesh into a PNG picture (iso view, 1024x1024,\n"
+    "                           boundary edges in red; see moa render for more views)\n"
     "      --ascii              write ASCII PLY instead of binary\n"
     "  -q, --quiet              no progress bar and no summary\n"
     "  -h, --help               this text\n"
     "\n"
     "A progress bar is drawn on stderr when it is a terminal. Ctrl-C cancels the run.\n";
+
+// Defined in render.cpp.
+void check_png_path(const std::string &path);
+double render_result(const std::string &image_path, const io::MeshData &mesh);
 
 namespace {
 
@@ -49,7 +55,7 @@ volatile std::sig_atomic_t g_interrupted = 0;
 extern "C" void on_interrupt(int) { g_interrupted = 1; }
 
 struct Options {
-  std::string input, output, stats;
+  std::string input, output, stats, render;
   std::vector<std::pair<std::string, std::string>> params;  // as given: name, value text
   bool ascii = false;
   bool quiet = false;
@@ -95,6 +101,8 @@ Options parse(int argc, char **argv) {
       o.params.emplace_back(spec.substr(0, eq), spec.substr(eq + 1));
     } else if (args.is(nullptr, "--stats")) {
       o.stats = args.value();
+    } else if (args.is(nullptr, "--render")) {
+      o.render = args.value();
     } else if (args.is(nullptr, "--ascii")) {
       o.ascii = true;
     } else if (args.is("-q", "--quiet")) {
@@ -228,6 +236,7 @@ int run_reconstruct(int argc, char **argv) {
   } catch (const io::IoError &e) {
     throw CliError(kExitOutput, about_file(o.output, e.what()));
   }
+  if (!o.render.empty()) check_png_path(o.render);
   moa_ctx *raw = nullptr;
   if (moa_ctx_create(&raw) != MOA_OK)
     throw CliError(kExitInternal, "cannot create a context: " + library_error(nullptr));
@@ -282,6 +291,10 @@ int run_reconstruct(int argc, char **argv) {
 
   if (!o.stats.empty()) write_stats(o, ctx.get(), stats, count, read_ms, run_ms, write_ms);
   if (!o.quiet) print_summary(o, stats, count, run_ms);
+  if (!o.render.empty()) {
+    const double render_ms = render_result(o.render, out);
+    if (!o.quiet) std::printf("rendered %s in %.1f ms.\n", o.render.c_str(), render_ms);
+  }
   return kExitOk;
 }
 

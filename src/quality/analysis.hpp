@@ -23,9 +23,11 @@ void analyze_topology(const double *xyz, size_t vertex_count, const uint32_t *tr
                       size_t triangle_count, const std::vector<uint8_t> &face_class,
                       MeshReport &report);
 
-// Exact self-intersection test of the kFaceOk faces with an Embree broad phase.
+// Exact self-intersection test of the kFaceOk faces with an Embree broad phase. Lists at most
+// max_listed pairs in report.intersecting_pairs (find_mesh_defects wants them all).
 void find_self_intersections(const double *xyz, const uint32_t *tri, size_t triangle_count,
-                             const std::vector<uint8_t> &face_class, MeshReport &report);
+                             const std::vector<uint8_t> &face_class, MeshReport &report,
+                             size_t max_listed = MeshReport::kMaxListed);
 
 // Union-find over 32-bit ids with path halving; `parity` variant tracks whether two elements
 // need opposite orientations.

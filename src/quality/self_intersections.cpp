@@ -107,7 +107,8 @@ struct Embree {
 }  // namespace
 
 void find_self_intersections(const double *xyz, const uint32_t *tri, size_t triangle_count,
-                             const std::vector<uint8_t> &face_class, MeshReport &r) {
+                             const std::vector<uint8_t> &face_class, MeshReport &r,
+                             size_t max_listed) {
   const auto start = std::chrono::steady_clock::now();
   Context c;
   c.xyz = xyz;
@@ -150,7 +151,7 @@ void find_self_intersections(const double *xyz, const uint32_t *tri, size_t tria
   }
   tbb::parallel_sort(hits.begin(), hits.end());
   r.self_intersecting_pairs = hits.size();
-  if (hits.size() > MeshReport::kMaxListed) hits.resize(MeshReport::kMaxListed);
+  if (hits.size() > max_listed) hits.resize(max_listed);
   r.intersecting_pairs = std::move(hits);
   r.intersection_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
