@@ -110,6 +110,7 @@ typedef struct moa_stats {
   double stage_ms[MOA_STAGE_COUNT]; /* wall time per stage */
   double total_ms;            /* wall time of moa_run */
   unsigned threads;           /* worker threads used */
+  size_t boundary_edges_before; /* boundary edges after Algorithm 1, before the loop module */
 } moa_stats;
 
 /* Version of the library actually loaded, as "MAJOR.MINOR.PATCH". Never NULL. */

@@ -68,7 +68,7 @@ std::size_t enforce_single_fans(std::size_t nv, const std::vector<Tri> &tris,
   return removed;
 }
 
-// Turns every closed component so that its signed volume is positive.
+// Turns every component so that its signed volume is positive: closed ones face outward.
 void orient_outward(const PointSet &points, std::vector<Tri> &tris,
                     const std::vector<char> &alive) {
   const std::size_t nf = tris.size();
@@ -79,35 +79,40 @@ void orient_outward(const PointSet &points, std::vector<Tri> &tris,
     return x;
   };
   Incidence inc(points.size(), tris, alive);
-  std::vector<uint8_t> open(nf, 0);
   for (uint32_t f = 0; f < nf; ++f) {
     if (!alive[f]) continue;
     for (int i = 0; i < 3; ++i) {
       uint32_t u = tris[f][i], w = tris[f][(i + 1) % 3];
-      int others = 0;
       for (uint32_t k = inc.start[u]; k < inc.start[u + 1]; ++k) {
         uint32_t h = inc.faces[k];
         if (h == f) continue;
         const Tri &t = tris[h];
-        if (t[0] == w || t[1] == w || t[2] == w) {
-          comp[root(f)] = root(h);
-          ++others;
-        }
+        if (t[0] == w || t[1] == w || t[2] == w) comp[root(f)] = root(h);
       }
-      if (others == 0) open[f] = 1;
     }
   }
-  std::vector<double> volume(nf, 0.0);
-  std::vector<uint8_t> comp_open(nf, 0);
+  // Signed volume of each component, measured from the component's centre: the same as from
+  // any point for a closed component; for an open one (a scan with a border, a surface with a
+  // hole left open) it still tells the side that bulges out, so its normals face the same way.
+  std::vector<Vec3> centre(nf, Vec3{0, 0, 0});
+  std::vector<uint32_t> corners(nf, 0);
   for (uint32_t f = 0; f < nf; ++f) {
     if (!alive[f]) continue;
-    const Vec3 &a = points.work[tris[f][0]], &b = points.work[tris[f][1]],
-               &c = points.work[tris[f][2]];
-    volume[root(f)] += dot(a, cross(b, c));
-    comp_open[root(f)] |= open[f];
+    for (int i = 0; i < 3; ++i) centre[root(f)] = centre[root(f)] + points.work[tris[f][i]];
+    corners[root(f)] += 3;
   }
   for (uint32_t f = 0; f < nf; ++f)
-    if (alive[f] && !comp_open[root(f)] && volume[root(f)] < 0) std::swap(tris[f][1], tris[f][2]);
+    if (corners[f]) centre[f] = centre[f] * (1.0 / corners[f]);
+  std::vector<double> volume(nf, 0.0);
+  for (uint32_t f = 0; f < nf; ++f) {
+    if (!alive[f]) continue;
+    const Vec3 &o = centre[root(f)];
+    const Vec3 a = points.work[tris[f][0]] - o, b = points.work[tris[f][1]] - o,
+               c = points.work[tris[f][2]] - o;
+    volume[root(f)] += dot(a, cross(b, c));
+  }
+  for (uint32_t f = 0; f < nf; ++f)
+    if (alive[f] && volume[root(f)] < 0) std::swap(tris[f][1], tris[f][2]);
 }
 
 std::size_t count_boundary_edges(const std::vector<Tri> &tris) {

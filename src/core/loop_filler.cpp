@@ -6,12 +6,14 @@
 // next to a loop join its candidates, so the filling takes them in.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <queue>
 #include <unordered_map>
 #include <vector>
 
 #include "core/growth_state.hpp"
+#include "core/hole_patch.hpp"
 
 namespace moa {
 namespace {
@@ -43,6 +45,16 @@ constexpr int kPasses = 4;  // the last two relax the local-plane and fan tests
 // Loops longer than this are borders unless the solid setting closes everything: measuring
 // their width costs a quadratic number of distances.
 constexpr std::size_t kMaxMeasuredLoop = 4096;
+// A loop at most this share of the square root of its surface's vertex count long, and at most
+// kSmallLoopWidths times the hole width wide, is a hole (see classify_and_pool).
+constexpr double kSmallLoopShare = 0.5;
+constexpr double kSmallLoopWidths = 3.0;
+// Longest loop the last-resort patch triangulates (its cost grows with the cube of the length).
+constexpr std::size_t kMaxPatchedLoop = 96;
+// Rings of faces a hole may lose so that a wider hole can be patched, and the total number of
+// rings removed in a run (each costs a pass over the mesh).
+constexpr int kMaxRings = 3;
+constexpr std::size_t kMaxWidenings = 256;
 
 class LoopFiller {
  public:
@@ -51,6 +63,41 @@ class LoopFiller {
   std::size_t count_loops() {
     collect_hole_edges();
     return trace_loops().size();
+  }
+
+  // The last resort: each hole still open is patched at once with the triangulation of its
+  // loop that bends the surface least (hole_patch.hpp), if every triangle of it passes the
+  // relaxed judgment. When the faces around the hole fold over it, they go and the wider hole
+  // is patched instead; if that fails too, they are put back. Returns the holes closed.
+  std::size_t patch_open_holes() {
+    collect_hole_edges();
+    loops_ = trace_loops();
+    classify_and_pool();
+    std::vector<std::vector<uint32_t>> holes;
+    for (const Loop &loop : loops_)
+      if (loop.fillable && loop.vertices.size() <= kMaxPatchedLoop) holes.push_back(loop.vertices);
+    std::size_t closed = 0, widenings = 0;
+    for (const std::vector<uint32_t> &hole : holes) {
+      if (!still_open(hole)) continue;  // widening a neighbouring hole changed it
+      std::vector<uint32_t> loop = hole;
+      std::vector<Tri> removed;
+      bool done = patch_pieces(loop);
+      for (int ring = 0; !done && ring < kMaxRings && widenings < kMaxWidenings; ++ring) {
+        ++widenings;
+        std::vector<Tri> rim = remove_rim(loop);
+        removed.insert(removed.end(), rim.begin(), rim.end());
+        loop = loop_around(loop, rim);
+        if (loop.empty() || loop.size() > kMaxPatchedLoop) break;
+        done = patch_pieces(loop);
+      }
+      if (done) {
+        g_.stats.triangles_removed += removed.size();
+        ++closed;
+      } else {
+        for (const Tri &t : removed) g_.add_face(t);  // as it was before
+      }
+    }
+    return closed;
   }
 
   // Removes the faces along every hole that stayed open although it was small enough to
@@ -71,7 +118,10 @@ class LoopFiller {
   void run(const std::function<void(double)> &tick) {
     collect_hole_edges();
     loops_ = trace_loops();
-    if (g_.stats.boundary_loops_before == 0) g_.stats.boundary_loops_before = loops_.size();
+    if (g_.stats.boundary_loops_before == 0) {  // the first round sees Algorithm 1's borders
+      g_.stats.boundary_loops_before = loops_.size();
+      for (const Loop &loop : loops_) g_.stats.boundary_edges_before += loop.vertices.size();
+    }
     classify_and_pool();
     for (int pass = 0; pass < kPasses; ++pass) {
       bool relaxed = pass >= kPasses / 2;
@@ -82,6 +132,132 @@ class LoopFiller {
   }
 
  private:
+  bool still_open(const std::vector<uint32_t> &loop) const {
+    const std::size_t n = loop.size();
+    for (std::size_t j = 0; j < n; ++j) {
+      uint32_t fs[2];
+      if (g_.mesh.edge_faces(loop[j], loop[(j + 1) % n], fs) != 1) return false;
+    }
+    return true;
+  }
+
+  // A loop through a vertex twice (a pinch) is two holes meeting there: each is patched on
+  // its own. All pieces or none.
+  bool patch_pieces(const std::vector<uint32_t> &loop) {
+    std::vector<std::vector<uint32_t>> pieces;
+    std::vector<uint32_t> rest = loop;
+    std::unordered_map<uint32_t, std::size_t> first;
+    for (std::size_t j = 0; j < rest.size(); ++j) {
+      auto [it, fresh] = first.emplace(rest[j], j);
+      if (fresh) continue;
+      // rest[i .. j) is a closed piece: cut it out and go on from its start.
+      const std::size_t i = it->second;
+      pieces.emplace_back(rest.begin() + std::ptrdiff_t(i), rest.begin() + std::ptrdiff_t(j));
+      rest.erase(rest.begin() + std::ptrdiff_t(i) + 1, rest.begin() + std::ptrdiff_t(j) + 1);
+      first.clear();
+      for (std::size_t k = 0; k <= i; ++k) first.emplace(rest[k], k);
+      j = i;
+    }
+    pieces.push_back(rest);
+    const std::size_t faces_before = g_.mesh.face_count(), counted = g_.stats.triangles_loops;
+    std::size_t done = 0;
+    for (const auto &piece : pieces) {
+      if (piece.size() < 3 || !patch(piece)) break;
+      ++done;
+    }
+    if (done == pieces.size()) return true;
+    for (uint32_t f = uint32_t(faces_before); f < g_.mesh.face_count(); ++f)
+      if (g_.mesh.alive(f)) g_.mesh.remove(f);
+    g_.stats.triangles_loops = counted;
+    return false;
+  }
+
+  // Adds the smoothest patch of the loop if all of it passes the judgment; else adds nothing.
+  bool patch(const std::vector<uint32_t> &loop) {
+    const auto &w = g_.points.work;
+    const std::size_t n = loop.size();
+    if (n > kMaxPatchedLoop || !still_open(loop)) return false;  // a broken trace is no hole
+    std::vector<Vec3> rim(n);
+    for (std::size_t j = 0; j < n; ++j) {
+      uint32_t fs[2];
+      g_.mesh.edge_faces(loop[j], loop[(j + 1) % n], fs);
+      Tri f = g_.mesh.oriented(fs[0]);
+      rim[j] = normalized(cross(w[f[1]] - w[f[0]], w[f[2]] - w[f[0]]));
+    }
+    const std::vector<Tri> tris = smoothest_patch(w, loop, rim, [this](uint32_t a, uint32_t b) {
+      uint32_t fs[2];
+      return g_.mesh.edge_faces(a, b, fs) > 0;
+    });
+    if (tris.empty()) return false;
+    std::vector<uint32_t> added;
+    for (const Tri &t : tris) {
+      Verdict verdict = g_.judge.judge(t, nullptr, 0, true);
+      TopologyJudge::count(verdict, g_.stats);
+      if (verdict != Verdict::Accept) break;
+      added.push_back(g_.add_face(t));
+    }
+    if (added.size() == tris.size()) {
+      g_.stats.triangles_loops += added.size();
+      return true;
+    }
+    for (uint32_t f : added) g_.mesh.remove(f);
+    return false;
+  }
+
+  // Removes the faces on the loop's edges; returns them as they were oriented.
+  std::vector<Tri> remove_rim(const std::vector<uint32_t> &loop) {
+    std::vector<uint32_t> faces;
+    const std::size_t n = loop.size();
+    for (std::size_t j = 0; j < n; ++j) {
+      uint32_t fs[2];
+      if (g_.mesh.edge_faces(loop[j], loop[(j + 1) % n], fs) == 1) faces.push_back(fs[0]);
+    }
+    std::sort(faces.begin(), faces.end());
+    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+    std::vector<Tri> ring;
+    for (uint32_t f : faces) {
+      ring.push_back(g_.mesh.oriented(f));
+      g_.mesh.remove(f);
+    }
+    return ring;
+  }
+
+  // The loop that now runs through most of the given loop's vertices, after remove_rim took
+  // the faces `rim`: traced from the faces around the rim's corners alone, which hold every
+  // edge of the wider hole, so the cost stays local.
+  std::vector<uint32_t> loop_around(const std::vector<uint32_t> &old, const std::vector<Tri> &rim) {
+    std::vector<uint32_t> faces;
+    for (const Tri &t : rim)
+      for (uint32_t v : t)
+        faces.insert(faces.end(), g_.mesh.faces_at(v).begin(), g_.mesh.faces_at(v).end());
+    std::sort(faces.begin(), faces.end());
+    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+    out_.clear();
+    for (uint32_t f : faces) {
+      if (!g_.mesh.alive(f)) continue;
+      Tri t = g_.mesh.oriented(f);
+      for (int i = 0; i < 3; ++i) {
+        uint32_t a = t[i], b = t[(i + 1) % 3], fs[2];
+        if (g_.mesh.edge_faces(a, b, fs) == 1) out_[b].push_back(a);
+      }
+    }
+    std::vector<Loop> loops = trace_loops(&old);
+    std::vector<uint32_t> sorted(old);
+    std::sort(sorted.begin(), sorted.end());
+    std::size_t best = 0, best_shared = 0;
+    for (std::size_t l = 0; l < loops.size(); ++l) {
+      std::size_t shared = 0;
+      for (uint32_t v : loops[l].vertices)
+        shared += std::binary_search(sorted.begin(), sorted.end(), v);
+      if (shared > best_shared) {
+        best_shared = shared;
+        best = l;
+      }
+    }
+    if (best_shared == 0) return {};
+    return std::move(loops[best].vertices);
+  }
+
   // Hole edges: the reverse of each boundary edge of a face, so that a face filling the hole
   // along it keeps the orientation.
   void collect_hole_edges() {
@@ -122,11 +298,18 @@ class LoopFiller {
     return best;
   }
 
-  std::vector<Loop> trace_loops() {
+  // Traces the loops through the hole edges in out_, starting from `from` when given (the
+  // vertices of one hole, whose loop is then traced first and whole), else from every vertex.
+  std::vector<Loop> trace_loops(const std::vector<uint32_t> *from = nullptr) {
     std::vector<Loop> loops;
     std::vector<uint32_t> starts;
-    for (auto &kv : out_) starts.push_back(kv.first);
-    std::sort(starts.begin(), starts.end());  // deterministic order
+    if (from != nullptr) {
+      for (uint32_t v : *from)
+        if (out_.count(v)) starts.push_back(v);
+    } else {
+      for (auto &kv : out_) starts.push_back(kv.first);
+      std::sort(starts.begin(), starts.end());  // deterministic order
+    }
     for (uint32_t s : starts) {
       while (!out_[s].empty()) {
         Loop loop;
@@ -169,8 +352,16 @@ class LoopFiller {
     return std::sqrt(width);
   }
 
+  // A loop is a hole, to be filled, when it is narrow (at most hole_size spacings wide: a gap
+  // left between growing fronts), or when it is short next to the surface it bounds and not
+  // too wide (a hole torn at a sharp edge or a crease of a large surface). A border of an open
+  // scan runs around the whole surface: its length is of the order of the square root of the
+  // surface's vertex count or more, however the scan is shaped.
   void classify_and_pool() {
     std::unordered_map<uint32_t, uint32_t> &loop_of_vertex = loop_of_vertex_;
+    std::unordered_map<uint32_t, std::size_t> faces_of_component;
+    for (uint32_t f = 0; f < g_.mesh.face_count(); ++f)
+      if (g_.mesh.alive(f)) ++faces_of_component[g_.mesh.component(f)];
     for (uint32_t l = 0; l < loops_.size(); ++l) {
       Loop &loop = loops_[l];
       double spacing = 0;
@@ -182,8 +373,15 @@ class LoopFiller {
         loop_of_vertex.emplace(a, l);
       }
       spacing /= double(n);
-      double width = loop_width(loop.vertices);
-      loop.fillable = g_.params.solid != 0 || width <= g_.params.hole_size * spacing;
+      const double width = loop_width(loop.vertices);
+      const double hole_width = g_.params.hole_size * spacing;
+      uint32_t fs[2];
+      g_.mesh.edge_faces(loop.vertices[1 % n], loop.vertices[0], fs);
+      const double surface_vertices = 0.5 * double(faces_of_component[g_.mesh.component(fs[0])]);
+      const bool narrow = width <= hole_width;
+      const bool small = double(n) <= kSmallLoopShare * std::sqrt(surface_vertices) &&
+                         width <= kSmallLoopWidths * hole_width;
+      loop.fillable = g_.params.solid != 0 || narrow || small;
     }
     // Candidates of a loop: its own vertices, and the neighbours of its vertices that lie on
     // another loop (the outer loop around an island, Fig. 9 (2), whose lists the paper
@@ -434,6 +632,7 @@ void fill_loops(GrowthState &g, const std::function<void(double)> &tick) {
     g.stats.triangles_removed += removed;
     if (removed == 0) break;
   }
+  LoopFiller(g).patch_open_holes();
   if (g.params.take_in_points != 0) take_in_points(g);
   g.stats.boundary_loops_after = LoopFiller(g).count_loops();
   tick(1.0);
