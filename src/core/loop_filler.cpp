@@ -79,23 +79,27 @@ class LoopFiller {
     std::size_t closed = 0, widenings = 0;
     for (const std::vector<uint32_t> &hole : holes) {
       if (!still_open(hole)) continue;  // widening a neighbouring hole changed it
-      std::vector<uint32_t> loop = hole;
-      std::vector<Tri> removed;
-      bool done = patch_pieces(loop);
-      for (int ring = 0; !done && ring < kMaxRings && widenings < kMaxWidenings; ++ring) {
-        ++widenings;
-        std::vector<Tri> rim = remove_rim(loop);
-        removed.insert(removed.end(), rim.begin(), rim.end());
-        loop = loop_around(loop, rim);
-        if (loop.empty() || loop.size() > kMaxPatchedLoop) break;
-        done = patch_pieces(loop);
-      }
-      if (done) {
-        g_.stats.triangles_removed += removed.size();
-        ++closed;
-      } else {
+      bool done = patch_pieces(hole);
+      // Widen first without dropping any vertex out of the mesh, then, if that fails, freely:
+      // a closed surface missing a point beats one with a hole.
+      for (bool keep_vertices : {true, false}) {
+        std::vector<uint32_t> loop = hole;
+        std::vector<Tri> removed;
+        for (int ring = 0; !done && ring < kMaxRings && widenings < kMaxWidenings; ++ring) {
+          ++widenings;
+          std::vector<Tri> rim = remove_rim(loop, keep_vertices);
+          removed.insert(removed.end(), rim.begin(), rim.end());
+          loop = loop_around(loop, rim);
+          if (rim.empty() || loop.empty() || loop.size() > kMaxPatchedLoop) break;
+          done = patch_pieces(loop);
+        }
+        if (done) {
+          g_.stats.triangles_removed += removed.size();
+          break;
+        }
         for (const Tri &t : removed) g_.add_face(t);  // as it was before
       }
+      closed += done;
     }
     return closed;
   }
@@ -205,7 +209,7 @@ class LoopFiller {
   }
 
   // Removes the faces on the loop's edges; returns them as they were oriented.
-  std::vector<Tri> remove_rim(const std::vector<uint32_t> &loop) {
+  std::vector<Tri> remove_rim(const std::vector<uint32_t> &loop, bool keep_vertices) {
     std::vector<uint32_t> faces;
     const std::size_t n = loop.size();
     for (std::size_t j = 0; j < n; ++j) {
@@ -216,7 +220,13 @@ class LoopFiller {
     faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
     std::vector<Tri> ring;
     for (uint32_t f : faces) {
-      ring.push_back(g_.mesh.oriented(f));
+      // A vertex whose last face this is would drop out of the mesh (the patch of the wider
+      // hole spans only the loop's vertices): with keep_vertices, that face stays.
+      const Tri t = g_.mesh.oriented(f);
+      bool last = false;
+      for (uint32_t v : t) last |= g_.mesh.faces_at(v).size() == 1;
+      if (keep_vertices && last) continue;
+      ring.push_back(t);
       g_.mesh.remove(f);
     }
     return ring;
