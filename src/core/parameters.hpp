@@ -18,7 +18,7 @@ struct Params {
   double edge_fold_angle = 30;       // minimum alpha between faces sharing an edge
   double vertex_fold_angle = 15;     // vertex alpha below which beta/gamma are examined
   double vertex_open_angle = 120;    // beta and gamma above which a vertex pair is a fold
-  double max_normal_deviation = 60;  // triangle normal vs local plane normal
+  double max_normal_deviation = 55;  // triangle normal vs local plane normal
   double hole_size = 5;              // widest hole the loop module closes, in units of spacing
   double solid = 0;                  // 1: close every hole regardless of size
   double take_in_points = 1;         // 1: insert left-out points in the loop/finish stages
