@@ -15,6 +15,9 @@ const double kMaxCornerCos = std::cos(degrees_to_radians(175.0));
 // The loop module's last passes accept flatter triangles: a sliver closes a crack that no
 // better triangle can.
 const double kMaxCornerCosRelaxed = std::cos(degrees_to_radians(179.0));
+// Steepest bend across which a triangle may join two pieces of the mesh (see
+// merges_across_a_bend).
+const double kMinMergeBendCos = std::cos(degrees_to_radians(90.0));
 
 // A triangle whose normal is more than about 100 degrees from the mean normal of a fan it
 // joins faces backwards.
@@ -133,6 +136,36 @@ bool TopologyJudge::edge_folds(const Tri &t) const {
       Vec3 u = normalized(cross(ab, C - B)), w = normalized(cross(ab, D - B));
       if (dot(u, w) > cos_edge_fold_) return true;
     }
+  }
+  return false;
+}
+
+bool TopologyJudge::merges_across_a_bend(const Tri &t) {
+  // A triangle that joins two pieces of the mesh decides how one piece is oriented relative to
+  // the other, for good. Across a steep bend that decision is a guess: two fronts of a noisy
+  // sample meeting at a step would turn a whole region inside out, and the seam where it meets
+  // the rest again could never close. So a joining triangle must continue both pieces smoothly:
+  // with D the far corner of a neighbour across edge AB, the neighbour oriented to match t is
+  // BAD, and its normal must not turn away from t's by more than kMaxMergeBend.
+  const auto &w = points_.work;
+  const Vec3 nt = normalized(cross(w[t[1]] - w[t[0]], w[t[2]] - w[t[0]]));
+  uint32_t first = kNone;
+  bool joins = false;
+  for (int i = 0; i < 3 && !joins; ++i) {
+    uint32_t fs[2];
+    if (mesh_.edge_faces(t[i], t[(i + 1) % 3], fs) != 1) continue;
+    const uint32_t c = mesh_.component(fs[0]);
+    if (first == kNone) first = c;
+    joins = c != first;
+  }
+  if (!joins) return false;
+  for (int i = 0; i < 3; ++i) {
+    const uint32_t a = t[i], b = t[(i + 1) % 3];
+    uint32_t fs[2];
+    if (mesh_.edge_faces(a, b, fs) != 1) continue;
+    const uint32_t d = third_vertex(mesh_.stored(fs[0]), a, b);
+    const Vec3 nd = normalized(cross(w[a] - w[b], w[d] - w[b]));
+    if (dot(nt, nd) < kMinMergeBendCos) return true;
   }
   return false;
 }
@@ -287,7 +320,7 @@ Verdict TopologyJudge::judge(const Tri &t, const uint32_t *sphere, std::size_t c
       return Verdict::Manifold;
   }
   if (!relaxed && normal_deviates(t)) return Verdict::Flatness;
-  if (edge_folds(t)) return Verdict::EdgeFold;
+  if (edge_folds(t) || merges_across_a_bend(t)) return Verdict::EdgeFold;
   Frame frame = frame_of(t);
   if (!relaxed && (vertex_folds(t) || faces_backwards(t, frame))) return Verdict::VertexFold;
   if (!relaxed && count > 0 && flatness_fails(t, sphere, count)) return Verdict::Flatness;

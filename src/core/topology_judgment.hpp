@@ -50,6 +50,7 @@ class TopologyJudge {
   bool is_sliver(const Tri &t) const;
   bool normal_deviates(const Tri &t) const;
   bool edge_folds(const Tri &t) const;
+  bool merges_across_a_bend(const Tri &t);
   bool vertex_folds(const Tri &t) const;
   // The components t will be joined to through its edges, and whether each one's orientation
   // is flipped relative to t (sign -1) or not (+1).

@@ -60,6 +60,22 @@ const Case &sphere_duplicates_case() {
   return c;
 }
 
+const Case &noisy_torus_case() {
+  // Uniform random samples with Gaussian noise of 0.02 % of the diagonal, as scanners deliver:
+  // fronts meeting at noisy steps must still join the right way round and close.
+  Points p = torus_random(6000, 1.0, 0.35, 18);
+  add_noise(p, 0.0002, 18);
+  static const Case c = make_case("noisy uniform torus", p);
+  return c;
+}
+
+const Case &noisy_genus2_case() {
+  Points p = shuffled(genus_surface(2, 0.05, 19), 19);
+  add_noise(p, 0.0002, 19);
+  static const Case c = make_case("noisy genus-2 surface", p);
+  return c;
+}
+
 }  // namespace
 
 MOA_CONTRACT_TESTS(fibonacci_sphere)
@@ -69,6 +85,8 @@ MOA_CONTRACT_TESTS(genus2)
 MOA_CONTRACT_TESTS(genus3)
 MOA_CONTRACT_TESTS(cube)
 MOA_CONTRACT_TESTS(sphere_duplicates)
+MOA_CONTRACT_TESTS(noisy_torus)
+MOA_CONTRACT_TESTS(noisy_genus2)
 
 static void test_fibonacci_sphere_closed_genus0(void **) { MOA_EXPECT(closed_failure(fibonacci_sphere_case(), 0)); }
 static void test_random_sphere_closed_genus0(void **) { MOA_EXPECT(closed_failure(random_sphere_case(), 0)); }
@@ -80,6 +98,9 @@ static void test_sphere_duplicates_closed_genus0(void **) {
   MOA_EXPECT(closed_failure(sphere_duplicates_case(), 0));
 }
 
+static void test_noisy_torus_closed_genus1(void **) { MOA_EXPECT(closed_failure(noisy_torus_case(), 1)); }
+static void test_noisy_genus2_closed_genus2(void **) { MOA_EXPECT(closed_failure(noisy_genus2_case(), 2)); }
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       MOA_CONTRACT_ENTRIES(fibonacci_sphere), cmocka_unit_test(test_fibonacci_sphere_closed_genus0),
@@ -89,6 +110,8 @@ int main(void) {
       MOA_CONTRACT_ENTRIES(genus3),           cmocka_unit_test(test_genus3_closed_genus3),
       MOA_CONTRACT_ENTRIES(cube),             cmocka_unit_test(test_cube_closed_genus0),
       MOA_CONTRACT_ENTRIES(sphere_duplicates), cmocka_unit_test(test_sphere_duplicates_closed_genus0),
+      MOA_CONTRACT_ENTRIES(noisy_torus),      cmocka_unit_test(test_noisy_torus_closed_genus1),
+      MOA_CONTRACT_ENTRIES(noisy_genus2),     cmocka_unit_test(test_noisy_genus2_closed_genus2),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
