@@ -8,9 +8,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <new>
 #include <memory>
 #include <mutex>
+#include <new>
 
 #include "core/predicates.hpp"
 
@@ -21,6 +21,8 @@ namespace {
 // float rounding so that Embree never misses a face the exact test would call a crossing.
 constexpr double kPad = 1e-5;
 constexpr int kMaxCellsPerFace = 64;
+// Pending faces a query may scan one by one before they are committed to the scene instead.
+constexpr std::size_t kMaxScannedPending = 1024;
 
 struct CollectContext {
   RTCIntersectContext base;  // first member: Embree hands this pointer back to the filter
@@ -155,6 +157,17 @@ void CrossingIndex::next_query(MeshState &mesh) {
 
 template <class Visit>
 bool CrossingIndex::visit_near(const Vec3 &lo, const Vec3 &hi, MeshState &mesh, Visit &&visit) {
+  int64_t x0 = int64_t(std::floor(lo.x / cell_)), x1 = int64_t(std::floor(hi.x / cell_));
+  int64_t y0 = int64_t(std::floor(lo.y / cell_)), y1 = int64_t(std::floor(hi.y / cell_));
+  int64_t z0 = int64_t(std::floor(lo.z / cell_)), z1 = int64_t(std::floor(hi.z / cell_));
+  const bool huge = (x1 - x0 + 1) * (y1 - y0 + 1) * (z1 - z0 + 1) > kMaxCellsPerFace;
+  // A box too large for the grid scans every pending face, and the oversized faces are always
+  // scanned: with many of either (the loop module trying long triangles across a wide border)
+  // that scan is quadratic, so the pending faces go into the Embree scene first.
+  const std::size_t pending = mesh.face_count() - committed_;
+  if ((huge && pending > kMaxScannedPending) || oversized_.size() > kMaxScannedPending) {
+    rebuild(mesh);
+  }
   // Committed faces: an Embree point query over the box's circumscribed sphere.
   if (scene_ && committed_ > 0) {
     found_.clear();
@@ -172,10 +185,7 @@ bool CrossingIndex::visit_near(const Vec3 &lo, const Vec3 &hi, MeshState &mesh, 
       if (visit(f)) return true;
   }
   // Pending faces: the grid cells the box touches.
-  int64_t x0 = int64_t(std::floor(lo.x / cell_)), x1 = int64_t(std::floor(hi.x / cell_));
-  int64_t y0 = int64_t(std::floor(lo.y / cell_)), y1 = int64_t(std::floor(hi.y / cell_));
-  int64_t z0 = int64_t(std::floor(lo.z / cell_)), z1 = int64_t(std::floor(hi.z / cell_));
-  if ((x1 - x0 + 1) * (y1 - y0 + 1) * (z1 - z0 + 1) > kMaxCellsPerFace) {
+  if (huge) {
     for (uint32_t f = committed_; f < mesh.face_count(); ++f)
       if (visit(f)) return true;
     return false;
