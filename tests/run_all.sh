@@ -1,11 +1,60 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds everything from scratch in build/ci and runs every test
-# (all labels but `slow`). This is the README's test command and what CI runs.
+# Installs what is missing, builds everything from scratch and runs every test (all labels but
+# `slow`). This is the README's test command and what CI runs. Phases, each in its own build
+# folder under build/:
+#   release   Release build, the whole suite (with valgrind memcheck over the ABI tests)  build/ci
+#   sanitize  the ci-sanitize preset: Debug + ASan/UBSan, the whole suite      build/ci-sanitize
+#   tsan      tests/robust/run_tsan.sh: contexts on threads under ThreadSanitizer  build/ci-tsan
+#   fuzz      tests/fuzz/run_fuzzers.sh: every libFuzzer target for MOA_FUZZ_SECONDS (default
+#             20, at most 60) each                                                 build/ci-fuzz
+# Usage: bash tests/run_all.sh [PHASE...]   (default: all four, in that order)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-bash tests/install_deps.sh --bindings
-build=build/ci
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DMOA_BUILD_TESTS=ON
-cmake --build "$build" -j"$(nproc)"
-ctest --test-dir "$build" --output-on-failure -j"$(nproc)" -LE slow --timeout 900
+phases=("$@")
+((${#phases[@]})) || phases=(release sanitize tsan fuzz)
+for p in "${phases[@]}"; do
+  case "$p" in
+    release | sanitize | tsan | fuzz) ;;
+    *) echo "unknown phase '$p' (expected release, sanitize, tsan or fuzz)" >&2; exit 2 ;;
+  esac
+done
+
+bash tests/install_deps.sh --bindings --robust
+jobs=$(nproc)
+timings=()
+started=$SECONDS
+
+run_phase() {
+  local name=$1 start=$SECONDS
+  echo "=== $name ==="
+  "phase_$name"
+  timings+=("$(printf '%-9s %4d s' "$name" $((SECONDS - start)))")
+}
+
+phase_release() {
+  local build=build/ci
+  cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DMOA_BUILD_TESTS=ON
+  cmake --build "$build" -j"$jobs"
+  ctest --test-dir "$build" --output-on-failure -j"$jobs" -LE slow --timeout 900
+}
+
+phase_sanitize() {
+  cmake --preset ci-sanitize
+  cmake --build --preset ci-sanitize -j"$jobs"
+  ctest --preset ci-sanitize -j"$jobs" --timeout 900
+}
+
+phase_tsan() {
+  bash tests/robust/run_tsan.sh build/ci-tsan
+}
+
+phase_fuzz() {
+  bash tests/fuzz/run_fuzzers.sh build/ci-fuzz "${MOA_FUZZ_SECONDS:-20}"
+}
+
+for p in "${phases[@]}"; do run_phase "$p"; done
+
+echo "=== timings ==="
+printf '%s\n' "${timings[@]}"
+printf '%-9s %4d s\n' total $((SECONDS - started))

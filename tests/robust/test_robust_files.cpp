@@ -1,5 +1,5 @@
 // Files that tests/io does not reach: paths that are not files (a FIFO, a device, symlinks,
-// names too long), and files that read cleanly but hold points that moa_run must refuse.
+// names too long), paths the user may not read (also when the tests run as root), and files that read cleanly but hold points that moa_run must refuse.
 // Malformed, truncated and lying files and the wrong format behind an extension are tests/io's.
 #include <climits>
 #include <limits>
@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include "io/io.hpp"
@@ -90,6 +91,49 @@ void paths_that_are_not_files(void **) {
   alarm(0);
 }
 
+// Paths the user may not read: a file without read permission, and a file in a folder without
+// search permission. Root reads anything, and CI runs as root, so the reads run in a child
+// that first gives root up (to nobody); the child reports through its exit status.
+void unreadable_paths(void **) {
+  const std::string locked = write_file("locked.xyz", "1 2 3\n");
+  const std::string closed = path_of("closed");
+  assert_int_equal(mkdir(closed.c_str(), 0755), 0);
+  const std::string inside = write_file("closed/inside.xyz", "1 2 3\n");
+  assert_int_equal(chmod(locked.c_str(), 0), 0);
+  assert_int_equal(chmod(closed.c_str(), 0), 0);
+  assert_int_equal(chmod(g_dir.c_str(), 0755), 0);  // nobody may look inside the scratch folder
+  std::fflush(nullptr);
+  const pid_t pid = fork();
+  assert_true(pid >= 0);
+  if (pid == 0) {
+    if (geteuid() == 0 && (setgid(65534) != 0 || setuid(65534) != 0)) _exit(3);
+    for (const std::string &path : {locked, inside}) {
+      try {
+        (void)moa::io::read_points(path);
+        std::fprintf(stderr, "%s: read without permission\n", path.c_str());
+        _exit(1);
+      } catch (const moa::io::IoError &e) {
+        const std::string message = e.what();
+        if (message.find(path) == std::string::npos ||
+            message.find("Permission denied") == std::string::npos) {
+          std::fprintf(stderr, "message '%s' lacks the path or 'Permission denied'\n", e.what());
+          _exit(1);
+        }
+      } catch (...) {
+        _exit(2);
+      }
+    }
+    _exit(0);
+  }
+  int status = 0;
+  assert_int_equal(waitpid(pid, &status, 0), pid);
+  chmod(closed.c_str(), 0700);  // so that the scratch folder can be removed
+  assert_int_equal(chmod(g_dir.c_str(), 0700), 0);
+  assert_true(WIFEXITED(status));
+  if (WEXITSTATUS(status) == 3) fail_msg("could not give up root to test permissions");
+  assert_int_equal(WEXITSTATUS(status), 0);
+}
+
 // A file that reads cleanly but whose points moa_run refuses: the whole path from file to
 // status, with the message naming the problem and the context usable afterwards.
 void expect_points_refused(moa_ctx *ctx, const std::string &path, const char *what,
@@ -148,6 +192,7 @@ void readable_files_with_bad_points(void **) {
 int main() {
   const CMUnitTest tests[] = {
       cmocka_unit_test(paths_that_are_not_files),
+      cmocka_unit_test(unreadable_paths),
       cmocka_unit_test(readable_files_with_bad_points),
   };
   return cmocka_run_group_tests(tests, make_dir, remove_dir);

@@ -184,6 +184,31 @@ void far_from_origin(void **) {
   moa_ctx_destroy(ctx);
 }
 
+// A small dense patch and one point millions of spacings away (a stray point in scanned,
+// georeferenced data): the crossing index's cells are sized by the patch's spacing, so a
+// triangle to the far point spans ~1e7 cells along each axis. Found by fuzz_run
+// (tests/fuzz/regressions/run/cell-count-overflow): the cell count overflowed int64.
+void dense_patch_and_far_point(void **) {
+  const Points patch = {0,       0, 0,       0.125,   0, -0.0625, 0.03125, 0, -0.0625,
+                        0.125,   0, -0.125,  0.0625,  0, -0.0625, 0.09375, 0, -0.09375,
+                        0.09375, 0, -0.0625};
+  moa_ctx *ctx = robust::new_ctx();
+  for (double far : {4e6, 1e8}) {
+    for (double threads : {1.0, 0.0}) {
+      Points p = patch;
+      p.insert(p.end(), {0.125, -far, 0});
+      assert_int_equal(moa_set_param(ctx, "threads", threads), MOA_OK);
+      EXPECT_RUN_OK(ctx, p);
+      // Georeferenced: the same with UTM-like offsets.
+      p = robust::transformed(patch, 1.0, 0);
+      for (std::size_t i = 0; i < p.size(); i += 3) p[i] += 512345, p[i + 1] += 4123456;
+      p.insert(p.end(), {512345.125, 4123456 - far, 0});
+      EXPECT_RUN_OK(ctx, p);
+    }
+  }
+  moa_ctx_destroy(ctx);
+}
+
 // Exact duplicates merge onto their first occurrence, are counted, and are never used.
 void exact_duplicates(void **) {
   const std::size_t n = 300;
@@ -242,6 +267,7 @@ int main() {
       cmocka_unit_test(tiny_magnitudes),
       cmocka_unit_test(tiny_magnitudes_not_collinear),
       cmocka_unit_test(far_from_origin),
+      cmocka_unit_test(dense_patch_and_far_point),
       cmocka_unit_test(exact_duplicates),
       cmocka_unit_test(near_duplicates),
   };

@@ -1,0 +1,7 @@
+// libFuzzer target: the bytes are a .stl file, read as points and as a mesh (STL reader).
+#include "fuzz/fuzz_io.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
+  moa::fuzz::read_both_ways(moa::io::Format::Stl, data, size);
+  return 0;
+}
