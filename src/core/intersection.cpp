@@ -40,6 +40,16 @@ bool collect_point_query(RTCPointQueryFunctionArguments *args) {
   return false;
 }
 
+// Whether box [lo, hi] covers more grid cells than a face may be filed under. Counted in
+// doubles: when the points crowd into a tiny part of the unit box (a dense patch and one far
+// point) the cells are tiny, and an integer product of the three spans would overflow.
+bool too_many_cells(const Vec3 &lo, const Vec3 &hi, double cell) {
+  const double span = (std::floor(hi.x / cell) - std::floor(lo.x / cell) + 1) *
+                      (std::floor(hi.y / cell) - std::floor(lo.y / cell) + 1) *
+                      (std::floor(hi.z / cell) - std::floor(lo.z / cell) + 1);
+  return !(span <= kMaxCellsPerFace);  // NaN counts as too many
+}
+
 uint64_t cell_key(int64_t x, int64_t y, int64_t z) {
   return (uint64_t(x & 0x1fffff) << 42) | (uint64_t(y & 0x1fffff) << 21) | uint64_t(z & 0x1fffff);
 }
@@ -84,13 +94,13 @@ void CrossingIndex::bounds(const Tri &t, Vec3 &lo, Vec3 &hi) const {
 void CrossingIndex::grid_insert(uint32_t f, const Tri &t) {
   Vec3 lo, hi;
   bounds(t, lo, hi);
-  int64_t x0 = int64_t(std::floor(lo.x / cell_)), x1 = int64_t(std::floor(hi.x / cell_));
-  int64_t y0 = int64_t(std::floor(lo.y / cell_)), y1 = int64_t(std::floor(hi.y / cell_));
-  int64_t z0 = int64_t(std::floor(lo.z / cell_)), z1 = int64_t(std::floor(hi.z / cell_));
-  if ((x1 - x0 + 1) * (y1 - y0 + 1) * (z1 - z0 + 1) > kMaxCellsPerFace) {
+  if (too_many_cells(lo, hi, cell_)) {
     oversized_.push_back(f);
     return;
   }
+  int64_t x0 = int64_t(std::floor(lo.x / cell_)), x1 = int64_t(std::floor(hi.x / cell_));
+  int64_t y0 = int64_t(std::floor(lo.y / cell_)), y1 = int64_t(std::floor(hi.y / cell_));
+  int64_t z0 = int64_t(std::floor(lo.z / cell_)), z1 = int64_t(std::floor(hi.z / cell_));
   for (int64_t x = x0; x <= x1; ++x)
     for (int64_t y = y0; y <= y1; ++y)
       for (int64_t z = z0; z <= z1; ++z) grid_[cell_key(x, y, z)].push_back(f);
@@ -157,10 +167,7 @@ void CrossingIndex::next_query(MeshState &mesh) {
 
 template <class Visit>
 bool CrossingIndex::visit_near(const Vec3 &lo, const Vec3 &hi, MeshState &mesh, Visit &&visit) {
-  int64_t x0 = int64_t(std::floor(lo.x / cell_)), x1 = int64_t(std::floor(hi.x / cell_));
-  int64_t y0 = int64_t(std::floor(lo.y / cell_)), y1 = int64_t(std::floor(hi.y / cell_));
-  int64_t z0 = int64_t(std::floor(lo.z / cell_)), z1 = int64_t(std::floor(hi.z / cell_));
-  const bool huge = (x1 - x0 + 1) * (y1 - y0 + 1) * (z1 - z0 + 1) > kMaxCellsPerFace;
+  const bool huge = too_many_cells(lo, hi, cell_);
   // A box too large for the grid scans every pending face, and the oversized faces are always
   // scanned: with many of either (the loop module trying long triangles across a wide border)
   // that scan is quadratic, so the pending faces go into the Embree scene first.
@@ -190,6 +197,9 @@ bool CrossingIndex::visit_near(const Vec3 &lo, const Vec3 &hi, MeshState &mesh, 
       if (visit(f)) return true;
     return false;
   }
+  int64_t x0 = int64_t(std::floor(lo.x / cell_)), x1 = int64_t(std::floor(hi.x / cell_));
+  int64_t y0 = int64_t(std::floor(lo.y / cell_)), y1 = int64_t(std::floor(hi.y / cell_));
+  int64_t z0 = int64_t(std::floor(lo.z / cell_)), z1 = int64_t(std::floor(hi.z / cell_));
   for (int64_t x = x0; x <= x1; ++x)
     for (int64_t y = y0; y <= y1; ++y)
       for (int64_t z = z0; z <= z1; ++z) {
