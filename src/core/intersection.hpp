@@ -53,6 +53,7 @@ class CrossingIndex {
   double cell_ = 0;
   std::unordered_map<uint64_t, std::vector<uint32_t>> grid_;
   std::vector<uint32_t> oversized_;  // pending faces spanning too many cells
+  double scan_debt_ = 0;             // pending faces scanned one by one since the last build
   std::vector<uint32_t> stamp_;      // per face: last query that tested it
   uint32_t query_ = 0;
   std::vector<uint32_t> found_;
