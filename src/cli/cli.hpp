@@ -1,9 +1,14 @@
 // The `moa` tool: shared pieces of its commands (exit codes, errors, argument walking).
 #pragma once
 
+#include <chrono>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+namespace moa::io {
+struct MeshData;
+}
 
 namespace moa::cli {
 
@@ -60,11 +65,24 @@ class ArgWalker {
 int run_reconstruct(int argc, char **argv);
 int run_params(int argc, char **argv);
 int run_check(int argc, char **argv);
+int run_render(int argc, char **argv);
 
 // Help texts of the commands, printed by `moa COMMAND --help` and `moa help COMMAND`.
 extern const char *const kReconstructHelp;
 extern const char *const kParamsHelp;
 extern const char *const kCheckHelp;
+extern const char *const kRenderHelp;
+
+// Used by `moa reconstruct --render` (defined in render.cpp): the .png check before the run,
+// and the picture after it; returns the milliseconds the picture took.
+void check_png_path(const std::string &path);
+double render_result(const std::string &image_path, const io::MeshData &mesh);
+
+using Clock = std::chrono::steady_clock;
+
+inline double ms_since(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
 
 // "path: what" unless `what` already names the path (the io library's messages do).
 std::string about_file(const std::string &path, const std::string &what);

@@ -11,10 +11,6 @@
 
 namespace moa::cli {
 
-// Defined in render.cpp.
-int run_render(int argc, char **argv);
-extern const char *const kRenderHelp;
-
 namespace {
 
 const char *const kHelp =

@@ -39,17 +39,7 @@ const char *const kReconstructHelp =
     "\n"
     "A progress bar is drawn on stderr when it is a terminal. Ctrl-C cancels the run.\n";
 
-// Defined in render.cpp.
-void check_png_path(const std::string &path);
-double render_result(const std::string &image_path, const io::MeshData &mesh);
-
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 volatile std::sig_atomic_t g_interrupted = 0;
 extern "C" void on_interrupt(int) { g_interrupted = 1; }

@@ -12,7 +12,6 @@
 
 namespace moa::cli {
 
-extern const char *const kRenderHelp;
 const char *const kRenderHelp =
     "Usage: moa render MESH -o IMAGE.png [options]\n"
     "\n"
@@ -33,17 +32,7 @@ const char *const kRenderHelp =
     "  -q, --quiet              no summary line\n"
     "  -h, --help               this text\n";
 
-// Used by `moa reconstruct --render`: the .png check before the run, the picture after it.
-void check_png_path(const std::string &path);
-double render_result(const std::string &image_path, const io::MeshData &mesh);
-
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 struct Options {
   std::string mesh, image;
