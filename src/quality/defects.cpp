@@ -4,9 +4,7 @@
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_sort.h>
 
-#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -51,18 +49,6 @@ std::vector<uint8_t> classify(const double *xyz, size_t vertex_count, const uint
   return cls;
 }
 
-struct EdgeRecord {
-  uint64_t key;  // (smaller index << 32) | larger index
-  uint32_t face;
-  uint32_t slot;  // the edge runs from corner slot to corner slot + 1
-  bool operator<(const EdgeRecord &o) const { return key != o.key ? key < o.key : face < o.face; }
-};
-
-uint32_t local_find(std::vector<uint32_t> &parent, uint32_t x) {
-  while (parent[x] != x) x = parent[x] = parent[parent[x]];
-  return x;
-}
-
 }  // namespace
 
 MeshDefects find_mesh_defects(const double *xyz, size_t vertex_count, const uint32_t *tri,
@@ -70,20 +56,10 @@ MeshDefects find_mesh_defects(const double *xyz, size_t vertex_count, const uint
   MeshDefects d;
   const std::vector<uint8_t> cls =
       classify(xyz, vertex_count, tri, triangle_count, test_intersections);
-  auto in_topology = [&](size_t f) { return cls[f] <= kFaceFlat; };
   std::vector<uint8_t> bad_face(triangle_count, 0);
 
   // The edge map: runs of records with one key are the faces of one edge.
-  std::vector<EdgeRecord> records;
-  records.reserve(3 * triangle_count);
-  for (size_t f = 0; f < triangle_count; ++f) {
-    if (!in_topology(f)) continue;
-    for (uint32_t k = 0; k < 3; ++k) {
-      const uint64_t a = tri[3 * f + k], b = tri[3 * f + (k + 1) % 3];
-      records.push_back({a < b ? (a << 32 | b) : (b << 32 | a), uint32_t(f), k});
-    }
-  }
-  tbb::parallel_sort(records.begin(), records.end());
+  std::vector<quality::EdgeRecord> records = quality::sorted_edge_records(tri, triangle_count, cls);
   std::vector<uint32_t> face_edge(3 * triangle_count, kNone);
   uint32_t edges = 0;
   for (size_t i = 0; i < records.size(); ++edges) {
@@ -99,21 +75,12 @@ MeshDefects find_mesh_defects(const double *xyz, size_t vertex_count, const uint
     }
     i = j;
   }
-  std::vector<EdgeRecord>().swap(records);
+  std::vector<quality::EdgeRecord>().swap(records);
 
   // Faces around each vertex, then its fans: faces joined through an edge at the vertex.
-  std::vector<uint32_t> offset(vertex_count + 1, 0);
-  for (size_t f = 0; f < triangle_count; ++f)
-    if (in_topology(f))
-      for (int k = 0; k < 3; ++k) ++offset[tri[3 * f + k] + 1];
-  for (size_t v = 0; v < vertex_count; ++v) offset[v + 1] += offset[v];
-  std::vector<uint32_t> vertex_faces(offset[vertex_count]);
-  {
-    std::vector<uint32_t> fill(offset.begin(), offset.end() - 1);
-    for (size_t f = 0; f < triangle_count; ++f)
-      if (in_topology(f))
-        for (int k = 0; k < 3; ++k) vertex_faces[fill[tri[3 * f + k]]++] = uint32_t(f);
-  }
+  const quality::VertexFaces vf =
+      quality::faces_around_vertices(tri, triangle_count, vertex_count, cls);
+  const std::vector<uint32_t> &offset = vf.offset, &vertex_faces = vf.faces;
   struct Scratch {
     std::vector<std::pair<uint32_t, uint32_t>> around;  // (edge, local face)
     std::vector<uint32_t> parent;
@@ -125,25 +92,8 @@ MeshDefects find_mesh_defects(const double *xyz, size_t vertex_count, const uint
     for (size_t v = range.begin(); v != range.end(); ++v) {
       const uint32_t begin = offset[v], m = offset[v + 1] - begin;
       if (m < 2) continue;
-      s.around.clear();
-      s.parent.resize(m);
-      for (uint32_t i = 0; i < m; ++i) {
-        const uint32_t f = vertex_faces[begin + i];
-        const int k = tri[3 * size_t(f)] == v ? 0 : tri[3 * size_t(f) + 1] == v ? 1 : 2;
-        s.parent[i] = i;
-        s.around.push_back({face_edge[3 * size_t(f) + k], i});
-        s.around.push_back({face_edge[3 * size_t(f) + (k + 2) % 3], i});
-      }
-      std::sort(s.around.begin(), s.around.end());
-      for (size_t a = 1; a < s.around.size(); ++a)
-        if (s.around[a].first == s.around[a - 1].first) {
-          const uint32_t x = local_find(s.parent, s.around[a].second),
-                         y = local_find(s.parent, s.around[a - 1].second);
-          if (x != y) s.parent[std::max(x, y)] = std::min(x, y);
-        }
-      uint32_t fans = 0;
-      for (uint32_t i = 0; i < m; ++i) fans += local_find(s.parent, i) == i;
-      pinched[v] = fans > 1;
+      pinched[v] = quality::group_fans(uint32_t(v), &vertex_faces[begin], m, tri, face_edge,
+                                       s.around, s.parent) > 1;
     }
   });
   for (size_t v = 0; v < vertex_count; ++v) {

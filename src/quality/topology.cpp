@@ -1,9 +1,7 @@
 // Topology of a triangle soup: the edge map (C2, C4 edge directions), the fans around each
 // vertex (C3), boundary loops, components, orientability, Euler characteristic and genus.
-#include <tbb/parallel_sort.h>
-
-#include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "quality/analysis.hpp"
 
@@ -11,15 +9,6 @@ namespace moa::quality {
 namespace {
 
 constexpr uint32_t kNone = UINT32_MAX;
-
-struct EdgeRecord {
-  uint64_t key;  // (smaller index << 32) | larger index
-  uint32_t face;
-  uint32_t slot;  // the edge runs from corner slot to corner slot + 1
-  bool operator<(const EdgeRecord &o) const {
-    return key != o.key ? key < o.key : face != o.face ? face < o.face : slot < o.slot;
-  }
-};
 
 // Union-find whose elements carry a flip bit relative to their root: uniting two faces that use
 // a shared edge in the same direction asks for opposite flips. A contradiction marks the set
@@ -68,12 +57,6 @@ class ParityUnionFind {
   std::vector<uint8_t> conflict_;
 };
 
-// Small union-find over the faces around one vertex.
-uint32_t local_find(std::vector<uint32_t> &parent, uint32_t x) {
-  while (parent[x] != x) x = parent[x] = parent[parent[x]];
-  return x;
-}
-
 }  // namespace
 
 void analyze_topology(const double *xyz, size_t vertex_count, const uint32_t *tri,
@@ -82,16 +65,7 @@ void analyze_topology(const double *xyz, size_t vertex_count, const uint32_t *tr
   auto in_topology = [&](size_t f) { return face_class[f] <= kFaceFlat; };
 
   // The edge map.
-  std::vector<EdgeRecord> records;
-  records.reserve(3 * triangle_count);
-  for (size_t f = 0; f < triangle_count; ++f) {
-    if (!in_topology(f)) continue;
-    for (uint32_t k = 0; k < 3; ++k) {
-      uint64_t a = tri[3 * f + k], b = tri[3 * f + (k + 1) % 3];
-      records.push_back({a < b ? (a << 32 | b) : (b << 32 | a), static_cast<uint32_t>(f), k});
-    }
-  }
-  tbb::parallel_sort(records.begin(), records.end());
+  std::vector<EdgeRecord> records = sorted_edge_records(tri, triangle_count, face_class);
 
   std::vector<uint32_t> face_edge(3 * triangle_count, kNone);
   std::vector<uint32_t> edge_faces;  // faces per edge
@@ -125,18 +99,8 @@ void analyze_topology(const double *xyz, size_t vertex_count, const uint32_t *tr
   std::vector<EdgeRecord>().swap(records);
 
   // Faces around each vertex.
-  std::vector<uint32_t> offset(vertex_count + 1, 0);
-  for (size_t f = 0; f < triangle_count; ++f)
-    if (in_topology(f))
-      for (int k = 0; k < 3; ++k) ++offset[tri[3 * f + k] + 1];
-  for (size_t v = 0; v < vertex_count; ++v) offset[v + 1] += offset[v];
-  std::vector<uint32_t> vertex_faces(offset[vertex_count]);
-  {
-    std::vector<uint32_t> fill(offset.begin(), offset.end() - 1);
-    for (size_t f = 0; f < triangle_count; ++f)
-      if (in_topology(f))
-        for (int k = 0; k < 3; ++k) vertex_faces[fill[tri[3 * f + k]]++] = static_cast<uint32_t>(f);
-  }
+  const VertexFaces vf = faces_around_vertices(tri, triangle_count, vertex_count, face_class);
+  const std::vector<uint32_t> &offset = vf.offset, &vertex_faces = vf.faces;
 
   // Fans: faces around v are joined when they share an edge at v. Boundary edges at v are
   // chained into one loop when their faces lie in the same fan.
@@ -149,24 +113,9 @@ void analyze_topology(const double *xyz, size_t vertex_count, const uint32_t *tr
     const uint32_t begin = offset[v], m = offset[v + 1] - begin;
     if (m == 0) continue;
     ++r.vertices_referenced;
-    around.clear();
-    parent.resize(m);
-    for (uint32_t i = 0; i < m; ++i) {
-      const uint32_t f = vertex_faces[begin + i];
-      components.unite(vertex_faces[begin], f);
-      parent[i] = i;
-      int k = tri[3 * f] == v ? 0 : tri[3 * f + 1] == v ? 1 : 2;
-      around.push_back({face_edge[3 * f + k], i});
-      around.push_back({face_edge[3 * f + (k + 2) % 3], i});
-    }
-    std::sort(around.begin(), around.end());
-    for (size_t a = 1; a < around.size(); ++a)
-      if (around[a].first == around[a - 1].first) {
-        uint32_t x = local_find(parent, around[a].second), y = local_find(parent, around[a - 1].second);
-        if (x != y) parent[std::max(x, y)] = std::min(x, y);
-      }
-    uint32_t fans = 0;
-    for (uint32_t i = 0; i < m; ++i) fans += local_find(parent, i) == i;
+    for (uint32_t i = 1; i < m; ++i) components.unite(vertex_faces[begin], vertex_faces[begin + i]);
+    const uint32_t fans =
+        group_fans(uint32_t(v), &vertex_faces[begin], m, tri, face_edge, around, parent);
     if (fans > 1) {
       ++r.non_manifold_vertices;
       vertex_non_manifold[v] = 1;
@@ -174,7 +123,7 @@ void analyze_topology(const double *xyz, size_t vertex_count, const uint32_t *tr
     loop_edge.assign(m, kNone);
     for (const auto &[e, i] : around) {
       if (edge_faces[e] != 1) continue;
-      const uint32_t fan = local_find(parent, i);
+      const uint32_t fan = fan_root(parent, i);
       if (loop_edge[fan] == kNone) loop_edge[fan] = e; else loops.unite(loop_edge[fan], e);
     }
   }
