@@ -98,7 +98,7 @@ void orient_outward(const PointSet &points, std::vector<Tri> &tris,
   std::vector<uint32_t> corners(nf, 0);
   for (uint32_t f = 0; f < nf; ++f) {
     if (!alive[f]) continue;
-    for (int i = 0; i < 3; ++i) centre[root(f)] = centre[root(f)] + points.work[tris[f][i]];
+    for (int i = 0; i < 3; ++i) centre[root(f)] = centre[root(f)] + points.placed()[tris[f][i]];
     corners[root(f)] += 3;
   }
   for (uint32_t f = 0; f < nf; ++f)
@@ -107,8 +107,8 @@ void orient_outward(const PointSet &points, std::vector<Tri> &tris,
   for (uint32_t f = 0; f < nf; ++f) {
     if (!alive[f]) continue;
     const Vec3 &o = centre[root(f)];
-    const Vec3 a = points.work[tris[f][0]] - o, b = points.work[tris[f][1]] - o,
-               c = points.work[tris[f][2]] - o;
+    const Vec3 a = points.placed()[tris[f][0]] - o, b = points.placed()[tris[f][1]] - o,
+               c = points.placed()[tris[f][2]] - o;
     volume[root(f)] += dot(a, cross(b, c));
   }
   for (uint32_t f = 0; f < nf; ++f)

@@ -80,10 +80,11 @@ RTCDevice shared_device() {
 CrossingIndex::CrossingIndex(const PointSet &points, double cell_size)
     : points_(points), cell_(cell_size) {
   vertices_.resize(points.size() * 3 + 4);  // Embree reads 16 bytes at the last vertex
+  const std::vector<Vec3> &placed = points.placed();
   for (std::size_t i = 0; i < points.size(); ++i) {
-    vertices_[3 * i] = float(points.work[i].x);
-    vertices_[3 * i + 1] = float(points.work[i].y);
-    vertices_[3 * i + 2] = float(points.work[i].z);
+    vertices_[3 * i] = float(placed[i].x);
+    vertices_[3 * i + 1] = float(placed[i].y);
+    vertices_[3 * i + 2] = float(placed[i].z);
   }
   device_ = shared_device();
 }
@@ -93,7 +94,8 @@ CrossingIndex::~CrossingIndex() {
 }
 
 void CrossingIndex::bounds(const Tri &t, Vec3 &lo, Vec3 &hi) const {
-  const Vec3 &a = points_.work[t[0]], &b = points_.work[t[1]], &c = points_.work[t[2]];
+  const std::vector<Vec3> &placed = points_.placed();
+  const Vec3 &a = placed[t[0]], &b = placed[t[1]], &c = placed[t[2]];
   lo = {std::min({a.x, b.x, c.x}) - kPad, std::min({a.y, b.y, c.y}) - kPad,
         std::min({a.z, b.z, c.z}) - kPad};
   hi = {std::max({a.x, b.x, c.x}) + kPad, std::max({a.y, b.y, c.y}) + kPad,
@@ -250,7 +252,7 @@ bool CrossingIndex::crosses(const Tri &t, double pad, MeshState &mesh,
     cc.base.filter = collect_filter;
     cc.hits = &found_;
     for (int e = 0; e < 3; ++e) {
-      const Vec3 &p = points_.work[t[e]], &q = points_.work[t[(e + 1) % 3]];
+      const Vec3 &p = points_.placed()[t[e]], &q = points_.placed()[t[(e + 1) % 3]];
       RTCRayHit rh{};
       // The segment, lengthened slightly at both ends so float rounding cannot shorten it.
       Vec3 d = q - p, o = p - d * 1e-4;

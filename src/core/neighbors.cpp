@@ -5,55 +5,22 @@
 
 #include <tbb/parallel_for.h>
 
-#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-#include <nanoflann.hpp>
+
+#include "core/kd_tree.hpp"
+#include "core/pca.hpp"
 
 namespace moa {
 namespace {
 
-struct Cloud {
-  const std::vector<Vec3> &p;
-  std::size_t kdtree_get_point_count() const { return p.size(); }
-  double kdtree_get_pt(std::size_t i, std::size_t d) const {
-    return d == 0 ? p[i].x : d == 1 ? p[i].y : p[i].z;
-  }
-  template <class Box>
-  bool kdtree_get_bbox(Box &) const {
-    return false;
-  }
-};
-
-using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Cloud>, Cloud,
-                                                 3, uint32_t>;
-
 constexpr unsigned kSpacingNeighbors = 6;
-
-Vec3 plane_normal(const std::vector<Vec3> &p, uint32_t self, const uint32_t *nb, unsigned k) {
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  auto vec = [&](uint32_t i) { return Eigen::Vector3d(p[i].x, p[i].y, p[i].z); };
-  mean += vec(self);
-  for (unsigned j = 0; j < k; ++j) mean += vec(nb[j]);
-  mean /= double(k + 1);
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  auto add = [&](uint32_t i) {
-    Eigen::Vector3d d = vec(i) - mean;
-    cov += d * d.transpose();
-  };
-  add(self);
-  for (unsigned j = 0; j < k; ++j) add(nb[j]);
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es;
-  es.computeDirect(cov);
-  Eigen::Vector3d n = es.eigenvectors().col(0);
-  return normalized(Vec3{n.x(), n.y(), n.z()});
-}
 
 }  // namespace
 
-Neighborhood compute_neighbors(const PointSet &points, unsigned k,
+Neighborhood compute_neighbors(const KdIndex &index, unsigned k,
                                const std::function<void(double)> &tick) {
-  const std::vector<Vec3> &p = points.work;
+  const std::vector<Vec3> &p = index.points();
   const std::size_t n = p.size();
   Neighborhood nb;
   nb.k = unsigned(std::min<std::size_t>(k, n - 1));
@@ -61,8 +28,6 @@ Neighborhood compute_neighbors(const PointSet &points, unsigned k,
   nb.spacing.resize(n);
   nb.normal.resize(n);
 
-  Cloud cloud{p};
-  Tree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(12));
   const unsigned want = nb.k + 1;  // the point itself comes back too
   const std::size_t block = 16384;
   for (std::size_t start = 0; start < n; start += block) {
@@ -72,8 +37,7 @@ Neighborhood compute_neighbors(const PointSet &points, unsigned k,
                         std::vector<uint32_t> idx(want);
                         std::vector<double> d2(want);
                         for (std::size_t i = r.begin(); i != r.end(); ++i) {
-                          double q[3] = {p[i].x, p[i].y, p[i].z};
-                          std::size_t got = tree.knnSearch(q, want, idx.data(), d2.data());
+                          std::size_t got = index.nearest(p[i], want, idx.data(), d2.data());
                           uint32_t *out = nb.knn.data() + i * nb.k;
                           unsigned m = 0;
                           for (std::size_t j = 0; j < got && m < nb.k; ++j)
@@ -91,7 +55,7 @@ Neighborhood compute_neighbors(const PointSet &points, unsigned k,
                             if (j < ns) sum += std::sqrt(tmp[j].first);
                           }
                           nb.spacing[i] = float(sum / std::max(1u, ns));
-                          nb.normal[i] = plane_normal(p, uint32_t(i), out, m);
+                          nb.normal[i] = pca_frame(p, uint32_t(i), out, m).axis[0];
                         }
                       });
     tick(double(end) / double(n));

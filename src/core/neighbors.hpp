@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/geometry.hpp"
+#include "core/kd_tree.hpp"
 #include "core/point_set.hpp"
 
 namespace moa {
@@ -23,7 +24,7 @@ struct Neighborhood {
 // Parallel over points (TBB); the result does not depend on the number of threads.
 // `tick(fraction)` is called now and then from the calling thread; it may throw Cancelled.
 
-Neighborhood compute_neighbors(const PointSet &points, unsigned k,
+Neighborhood compute_neighbors(const KdIndex &index, unsigned k,
                                const std::function<void(double)> &tick);
 
 }  // namespace moa

@@ -63,6 +63,12 @@ const ParamRow kRows[] = {
      0, 1, true, &Params::solid},
     {"take_in_points", "1 lets the loop module take in points Algorithm 1 left out", 0, 1, true,
      &Params::take_in_points},
+    {"smoothing",
+     "noisy clouds: the judgment measures its angles on a copy of the points smoothed onto "
+     "local quadrics, while the vertices stay the caller's points. 0 never; 1 when the cloud "
+     "looks noisy (its scatter off the local plane shrinks relative to the neighbourhood as "
+     "the neighbourhood grows, where a clean surface's curvature makes it grow); 2 always",
+     0, 2, true, &Params::smoothing},
 };
 
 }  // namespace

@@ -22,6 +22,7 @@ struct Params {
   double hole_size = 5;              // widest hole the loop module closes, in units of spacing
   double solid = 0;                  // 1: close every hole regardless of size
   double take_in_points = 1;         // 1: insert left-out points in the loop/finish stages
+  double smoothing = 1;              // 0 never, 1 when the cloud looks noisy, 2 always
 };
 
 struct ParamSpec {

@@ -12,11 +12,16 @@ namespace moa {
 
 struct PointSet {
   std::vector<Vec3> exact;         // caller's coordinates × 2^k, internal order: exact predicates
-  std::vector<Vec3> work;          // centred and scaled to unit diagonal: floating geometry
+  std::vector<Vec3> work;          // centred and scaled to unit diagonal: the judgment's geometry
+  // The caller's points in work units when `work` holds a smoothed copy (noisy clouds, see
+  // smoothing.hpp); empty otherwise.
+  std::vector<Vec3> raw_work;
   std::vector<uint32_t> original;  // internal index -> caller's index (first occurrence)
   std::size_t input_count = 0;
   std::size_t duplicates = 0;
   std::size_t size() const { return exact.size(); }
+  // Where the vertices really are, in work units: what crossing tests and output measure.
+  const std::vector<Vec3> &placed() const { return raw_work.empty() ? work : raw_work; }
 };
 
 // Throws moa::Error(MOA_ERROR_INVALID_INPUT) with a message naming the problem.

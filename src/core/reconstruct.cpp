@@ -8,11 +8,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 
 #include "core/finish.hpp"
 #include "core/growth_state.hpp"
 #include "core/neighbors.hpp"
 #include "core/point_set.hpp"
+#include "core/smoothing.hpp"
 
 namespace moa {
 namespace {
@@ -23,11 +25,38 @@ double ms_since(Clock::time_point t) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
 }
 
+constexpr int kMaxSmoothingPasses = 3;
+// Neighbourhood of a pass forced on a cloud that does not look noisy.
+constexpr unsigned kForcedSmoothingK = 40;
+
 // Median point spacing: the cell size of the crossing index's grid of recent faces.
 double median_spacing(const Neighborhood &nb) {
   std::vector<float> s(nb.spacing);
   std::nth_element(s.begin(), s.begin() + s.size() / 2, s.end());
   return std::max(1e-9, double(s[s.size() / 2]));
+}
+
+// Replaces the judgment's geometry by a smoothed copy when the parameter and the cloud call for
+// it (smoothing.hpp); the caller's points stay in raw_work. A pass leaves some roughness at the
+// smallest scale when the noise exceeds the spacing, so the cloud is looked at again after each.
+// Returns the tree over the final work coordinates, for the neighbour stage.
+std::unique_ptr<KdIndex> smooth_if_noisy(PointSet &points, const Params &params,
+                                         const std::function<void(double)> &tick) {
+  auto index = std::make_unique<KdIndex>(points.work);
+  if (params.smoothing == 0) return index;
+  for (int pass = 0; pass < kMaxSmoothingPasses; ++pass) {
+    NoiseEstimate noise = estimate_noise(*index);
+    const bool forced = pass == 0 && params.smoothing == 2;
+    if (!noise.noisy && !forced) break;
+    const unsigned k = noise.smoothing_k ? noise.smoothing_k : kForcedSmoothingK;
+    std::vector<Vec3> smooth =
+        smoothed_points(*index, k, [&](double f) { tick((pass + f) / kMaxSmoothingPasses); });
+    index.reset();
+    if (points.raw_work.empty()) points.raw_work = std::move(points.work);
+    points.work = std::move(smooth);
+    index = std::make_unique<KdIndex>(points.work);
+  }
+  return index;
 }
 
 Result run_stages(const double *xyz, std::size_t count, const Params &params,
@@ -50,8 +79,11 @@ Result run_stages(const double *xyz, std::size_t count, const Params &params,
 
   t = Clock::now();
   report(MOA_STAGE_NEIGHBORS, 0.0);
-  Neighborhood nb = compute_neighbors(points, unsigned(params.neighbors),
-                                      [&](double f) { report(MOA_STAGE_NEIGHBORS, f); });
+  std::unique_ptr<KdIndex> index =
+      smooth_if_noisy(points, params, [&](double f) { report(MOA_STAGE_NEIGHBORS, 0.5 * f); });
+  Neighborhood nb = compute_neighbors(*index, unsigned(params.neighbors),
+                                      [&](double f) { report(MOA_STAGE_NEIGHBORS, 0.5 + 0.5 * f); });
+  index.reset();
   st.stage_ms[MOA_STAGE_NEIGHBORS] = ms_since(t);
 
   std::vector<Tri> faces;

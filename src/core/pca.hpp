@@ -1,0 +1,21 @@
+// Principal axes of a small neighbourhood: the local plane used by the neighbour, smoothing and
+// noise stages.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/geometry.hpp"
+
+namespace moa {
+
+struct PcaFrame {
+  Vec3 centroid;
+  Vec3 axis[3];       // unit axes, smallest spread first: axis[0] is the plane's normal
+  double spread[3];   // eigenvalues of the scatter matrix (sums, not means), ascending
+};
+
+// The frame of point `self` and its k neighbours `nb`.
+PcaFrame pca_frame(const std::vector<Vec3> &p, uint32_t self, const uint32_t *nb, unsigned k);
+
+}  // namespace moa

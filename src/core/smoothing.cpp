@@ -1,0 +1,148 @@
+#include "core/smoothing.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+
+#include "core/kd_tree.hpp"
+#include "core/pca.hpp"
+
+namespace moa {
+namespace {
+
+// Neighbourhood sizes the estimate compares; the first two are the "small" scale.
+constexpr unsigned kScales[] = {10, 20, 40, 80, 160, 320};
+constexpr int kSmallScales = 2;
+// Points sampled for the estimate: enough for stable medians, few enough to cost little.
+constexpr std::size_t kNoiseSamples = 2000;
+// A neighbourhood of more than this fraction of the cloud measures the object's shape, not its
+// surface: on a small cloud it narrows again as it wraps around the whole object.
+constexpr std::size_t kMaxScaleFraction = 20;
+// The cloud is noisy when some larger neighbourhood is flatter than this fraction of the
+// roughest small one: a coarse but clean sample can dip by 10-15 % (a tube a few points
+// round), noise that matters by 25 % and more.
+constexpr double kNoisyDrop = 0.8;
+// Below this median thickness / width at the small scale the scatter is too small to matter
+// (a clean surface's own curvature gives 0.03-0.1 at 20 points).
+constexpr double kMinRoughness = 0.05;
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  return v[v.size() / 2];
+}
+
+// Thickness over width of a neighbourhood: the spread off the plane against the larger spread
+// in it, both as standard deviations.
+double flatness_ratio(const PcaFrame &f) {
+  return f.spread[1] > 0 ? std::sqrt(std::max(0.0, f.spread[0]) / f.spread[1]) : 0.0;
+}
+
+// The point moved onto the quadric h(u, v) fitted to its neighbourhood in the frame's plane;
+// onto the plane itself when the neighbourhood cannot support a quadric.
+Vec3 project_onto_quadric(const std::vector<Vec3> &p, uint32_t self, const uint32_t *nb,
+                          unsigned k) {
+  PcaFrame f = pca_frame(p, self, nb, k);
+  const Vec3 &n = f.axis[0], &e1 = f.axis[1], &e2 = f.axis[2];
+  Eigen::Matrix<double, 6, 6> normal_matrix = Eigen::Matrix<double, 6, 6>::Zero();
+  Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
+  // Coordinates in units of the neighbourhood's width keep the system well scaled.
+  const double width = std::sqrt(std::max(f.spread[2], 1e-300) / double(k + 1));
+  auto add = [&](uint32_t i) {
+    Vec3 d = p[i] - f.centroid;
+    double u = dot(d, e1) / width, v = dot(d, e2) / width, h = dot(d, n) / width;
+    Eigen::Matrix<double, 6, 1> row;
+    row << u * u, u * v, v * v, u, v, 1.0;
+    normal_matrix += row * row.transpose();
+    rhs += row * h;
+  };
+  add(self);
+  for (unsigned j = 0; j < k; ++j) add(nb[j]);
+  Vec3 d = p[self] - f.centroid;
+  double u = dot(d, e1) / width, v = dot(d, e2) / width;
+  double h = 0;
+  if (k + 1 >= 10) {
+    Eigen::LDLT<Eigen::Matrix<double, 6, 6>> solver(normal_matrix);
+    if (solver.info() == Eigen::Success && solver.isPositive()) {
+      Eigen::Matrix<double, 6, 1> c = solver.solve(rhs);
+      double fitted = c(0) * u * u + c(1) * u * v + c(2) * v * v + c(3) * u + c(4) * v + c(5);
+      if (std::isfinite(fitted)) h = fitted;
+    }
+  }
+  return f.centroid + e1 * (u * width) + e2 * (v * width) + n * (h * width);
+}
+
+}  // namespace
+
+NoiseEstimate estimate_noise(const KdIndex &index) {
+  const std::vector<Vec3> &work = index.points();
+  NoiseEstimate est;
+  const std::size_t n = work.size();
+  const std::size_t limit = n / kMaxScaleFraction;
+  if (limit < kScales[kSmallScales]) return est;
+  const unsigned largest = unsigned(std::min<std::size_t>(kScales[std::size(kScales) - 1], limit));
+  const std::size_t step = std::max<std::size_t>(1, n / kNoiseSamples);
+  const std::size_t samples = (n + step - 1) / step;
+  constexpr std::size_t kScaleCount = std::size(kScales);
+  std::vector<double> ratios(samples * kScaleCount, -1.0);
+  tbb::parallel_for(std::size_t(0), samples, [&](std::size_t s) {
+    const std::size_t i = s * step;
+    std::vector<uint32_t> idx(largest + 1), others;
+    std::vector<double> d2(largest + 1);
+    std::size_t got = index.nearest(work[i], largest + 1, idx.data(), d2.data());
+    for (std::size_t j = 0; j < got; ++j)
+      if (idx[j] != i) others.push_back(idx[j]);
+    for (std::size_t c = 0; c < kScaleCount; ++c)
+      if (kScales[c] <= others.size())
+        ratios[s * kScaleCount + c] =
+            flatness_ratio(pca_frame(work, uint32_t(i), others.data(), kScales[c]));
+  });
+  double medians[kScaleCount];
+  for (std::size_t c = 0; c < kScaleCount; ++c) {
+    std::vector<double> col;
+    for (std::size_t s = 0; s < samples; ++s)
+      if (ratios[s * kScaleCount + c] >= 0) col.push_back(ratios[s * kScaleCount + c]);
+    medians[c] = col.empty() ? -1.0 : median(col);
+  }
+  est.small_scale = std::max(medians[0], medians[1]);
+  est.large_scale = est.small_scale;
+  for (std::size_t c = kSmallScales; c < kScaleCount; ++c)
+    if (medians[c] >= 0 && medians[c] < est.large_scale) {
+      est.large_scale = medians[c];
+      est.smoothing_k = kScales[c];
+    }
+  est.noisy = est.smoothing_k != 0 && est.small_scale > kMinRoughness &&
+              est.large_scale < kNoisyDrop * est.small_scale;
+  return est;
+}
+
+std::vector<Vec3> smoothed_points(const KdIndex &index, unsigned k,
+                                  const std::function<void(double)> &tick) {
+  const std::vector<Vec3> &work = index.points();
+  const std::size_t n = work.size();
+  k = unsigned(std::min<std::size_t>(k, n - 1));
+  std::vector<Vec3> out(n);
+  const std::size_t block = 16384;
+  for (std::size_t start = 0; start < n; start += block) {
+    const std::size_t end = std::min(n, start + block);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(start, end, 64),
+                      [&](const tbb::blocked_range<std::size_t> &r) {
+                        std::vector<uint32_t> idx(k + 1), others;
+                        std::vector<double> d2(k + 1);
+                        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+                          std::size_t got = index.nearest(work[i], k + 1, idx.data(), d2.data());
+                          others.clear();
+                          for (std::size_t j = 0; j < got; ++j)
+                            if (idx[j] != i) others.push_back(idx[j]);
+                          out[i] = project_onto_quadric(work, uint32_t(i), others.data(),
+                                                        unsigned(others.size()));
+                        }
+                      });
+    tick(double(end) / double(n));
+  }
+  return out;
+}
+
+}  // namespace moa

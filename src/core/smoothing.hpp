@@ -1,0 +1,37 @@
+// Stage 2a: noisy clouds. When the points scatter about their surface by a sizeable fraction of
+// their spacing, angles measured between raw points say little about the surface: triangles
+// stand on edge, the reference planes wobble and the judgment refuses nearly everything. For
+// such clouds the judgment measures its angles on a smoothed copy of the points (each moved
+// onto a quadric fitted to its neighbourhood), while the mesh's vertices, and every crossing
+// test, stay on the caller's points. Where the noise is small next to the surface's curvature,
+// a triangulation chosen on the smoothed points and lifted back onto the raw ones is a graph
+// over the same local plane, and a graph does not cross itself.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "core/geometry.hpp"
+#include "core/kd_tree.hpp"
+#include "core/point_set.hpp"
+
+namespace moa {
+
+struct NoiseEstimate {
+  bool noisy = false;          // the roughness shrinks as the neighbourhood grows
+  unsigned smoothing_k = 0;    // neighbourhood size at which the cloud looks flattest
+  double small_scale = 0;      // median thickness / width at 10 or 20 points, the rougher
+  double large_scale = 0;      // the same at smoothing_k points
+};
+
+// Looks at a fixed sample of points at several neighbourhood sizes. Thickness over width grows
+// with the neighbourhood on a clean surface (curvature) and shrinks on a noisy one (the scatter
+// is the same at every size while the width grows). Deterministic.
+NoiseEstimate estimate_noise(const KdIndex &index);
+
+// Each point moved onto the quadric fitted (least squares, in its PCA frame) to its k nearest
+// neighbours. Parallel over points; independent of the thread count.
+std::vector<Vec3> smoothed_points(const KdIndex &index, unsigned k,
+                                  const std::function<void(double)> &tick);
+
+}  // namespace moa

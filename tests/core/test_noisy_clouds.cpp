@@ -1,0 +1,140 @@
+// Noisy clouds (src/core/smoothing.hpp): the noise estimate must tell scatter from curvature,
+// and clouds whose scatter reaches the point spacing must still come out closed, with their
+// genus, every point a vertex and the contract held on the caller's coordinates.
+#include "core/kd_tree.hpp"
+#include "core/point_set.hpp"
+#include "core/smoothing.hpp"
+#include "core_harness.hpp"
+
+// cmocka last: its macros (fail, ...) clash with names in the standard headers.
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+extern "C" {  // this cmocka's header has no C++ guard of its own
+#include <cmocka.h>
+}
+
+#include <cmath>
+
+using namespace moa::test;
+
+namespace {
+
+Points noisy(Points p, double fraction, std::uint64_t seed) {
+  add_noise(p, fraction, seed);
+  return p;
+}
+
+moa::NoiseEstimate estimate_of(const Points &p) {
+  moa::PointSet points = moa::prepare_points(p.data(), p.size() / 3);
+  moa::KdIndex index(points.work);
+  return moa::estimate_noise(index);
+}
+
+// 6000 points on the unit sphere are 0.046 apart; the diagonal is 3.46: noise of 2 % of it is
+// a standard deviation of 1.5 spacings, as in a rough scan of a ball.
+const Case &rough_sphere_case() {
+  static const Case c = make_case("sphere, noise 1.5 spacings", noisy(sphere_random(6000, 1.0, 71), 0.02, 71));
+  return c;
+}
+
+// 8000 points on a torus (R 1, r 0.4) are 0.044 apart; diagonal 4.04: 0.8 % is 0.7 spacings.
+const Case &rough_torus_case() {
+  static const Case c = make_case("torus, noise 0.7 spacings", noisy(torus_random(8000, 1.0, 0.4, 72), 0.008, 72));
+  return c;
+}
+
+// A genus-3 surface sampled 0.05 apart, noise of half a spacing.
+const Case &rough_genus3_case() {
+  Points p = genus_surface(3, 0.05, 73);
+  add_noise(p, 0.5 * 0.05 / bbox_diagonal(p), 73);
+  static const Case c = make_case("genus-3 surface, noise 0.5 spacings", p);
+  return c;
+}
+
+void test_clean_clouds_are_not_noisy(void **) {
+  // Curvature, coarse sampling, sharp edges and grid ties, but no scatter.
+  const Points clean[] = {sphere_random(3000, 1.0, 74), torus_random(4000, 1.0, 0.3, 75),
+                          torus_grid(24, 8, 1.0, 0.3),   fibonacci_sphere(500),
+                          cube_grid(20),                 genus_surface(2, 0.1, 76),
+                          hemisphere(1500),              flat_grid(60, 60)};
+  for (const Points &p : clean) {
+    moa::NoiseEstimate e = estimate_of(p);
+    if (e.noisy)
+      fail_msg("a clean cloud of %zu points looked noisy: thickness/width %.3f at 10-20 points, "
+               "%.3f at %u", p.size() / 3, e.small_scale, e.large_scale, e.smoothing_k);
+  }
+}
+
+void test_noisy_clouds_are_noisy(void **) {
+  const Points rough[] = {noisy(sphere_random(6000, 1.0, 77), 0.02, 77),
+                          noisy(torus_random(8000, 1.0, 0.4, 78), 0.008, 78),
+                          noisy(flat_grid(80, 80), 0.005, 79)};
+  for (const Points &p : rough) {
+    moa::NoiseEstimate e = estimate_of(p);
+    if (!e.noisy)
+      fail_msg("a noisy cloud of %zu points was not seen as noisy: %.3f at 10-20 points, %.3f "
+               "at %u", p.size() / 3, e.small_scale, e.large_scale, e.smoothing_k);
+    assert_true(e.smoothing_k > 20);
+  }
+}
+
+// Smoothing moves the judgment's copy only: every smoothed point stays within a few noise
+// deviations of its raw position, and the copy is thinner than the raw cloud.
+void test_smoothing_thins_the_cloud(void **) {
+  Points p = noisy(sphere_random(6000, 1.0, 80), 0.02, 80);
+  moa::PointSet points = moa::prepare_points(p.data(), p.size() / 3);
+  moa::KdIndex index(points.work);
+  moa::NoiseEstimate e = moa::estimate_noise(index);
+  assert_true(e.noisy);
+  std::vector<moa::Vec3> smooth = moa::smoothed_points(index, e.smoothing_k, [](double) {});
+  assert_int_equal(smooth.size(), points.work.size());
+  // The sphere's centre and radius in work units: the mean of the raw points and their mean
+  // distance from it.
+  moa::Vec3 centre{};
+  for (const moa::Vec3 &q : points.work) centre = centre + q * (1.0 / double(points.work.size()));
+  auto radial_spread = [&](const std::vector<moa::Vec3> &v) {
+    double sum = 0, sum2 = 0;
+    for (const moa::Vec3 &q : v) {
+      double r = moa::dist(q, centre);
+      sum += r;
+      sum2 += r * r;
+    }
+    double mean = sum / double(v.size());
+    return std::sqrt(std::max(0.0, sum2 / double(v.size()) - mean * mean));
+  };
+  const double raw = radial_spread(points.work), smoothed = radial_spread(smooth);
+  if (!(smoothed < 0.35 * raw))
+    fail_msg("radial spread %.5f after smoothing, %.5f before: not thinned enough", smoothed, raw);
+  const double noise = 0.02;  // 2 % of the diagonal, which is 1 in work units
+  for (std::size_t i = 0; i < smooth.size(); ++i)
+    if (moa::dist(smooth[i], points.work[i]) > 6 * noise)
+      fail_msg("point %zu moved %.4f, more than six noise deviations", i,
+               moa::dist(smooth[i], points.work[i]));
+}
+
+void test_rough_sphere_closed(void **) { MOA_EXPECT(closed_failure(rough_sphere_case(), 0)); }
+void test_rough_torus_closed(void **) { MOA_EXPECT(closed_failure(rough_torus_case(), 1)); }
+void test_rough_genus3_closed(void **) { MOA_EXPECT(closed_failure(rough_genus3_case(), 3)); }
+
+}  // namespace
+
+MOA_CONTRACT_TESTS(rough_sphere)
+MOA_CONTRACT_TESTS(rough_torus)
+MOA_CONTRACT_TESTS(rough_genus3)
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(test_clean_clouds_are_not_noisy),
+      cmocka_unit_test(test_noisy_clouds_are_noisy),
+      cmocka_unit_test(test_smoothing_thins_the_cloud),
+      cmocka_unit_test(test_rough_sphere_closed),
+      cmocka_unit_test(test_rough_torus_closed),
+      cmocka_unit_test(test_rough_genus3_closed),
+      MOA_CONTRACT_ENTRIES(rough_sphere),
+      MOA_CONTRACT_ENTRIES(rough_torus),
+      MOA_CONTRACT_ENTRIES(rough_genus3),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
