@@ -1,8 +1,13 @@
 // Taking in left-out points (paper §3.5.2, step 1): a point that no triangle reached but that
 // lies over a triangle of the finished surface becomes a vertex by splitting that triangle in
-// three, when the three new triangles pass the same judgment as every other.
+// three, when the three new triangles pass the same judgment as every other. When no such split
+// passes (on a noisy cloud a point can stand well off its neighbours' triangles), splitting an
+// edge of a nearby triangle, and the two triangles on it in two each, is tried instead.
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
+#include <tuple>
+#include <initializer_list>
 
 #include "core/growth_state.hpp"
 
@@ -13,6 +18,9 @@ namespace {
 constexpr unsigned kNearbyVertices = 8;
 // A point farther from a face's plane than this many local spacings is not on that face.
 constexpr double kMaxHeight = 1.0;
+// A face whose nearest barycentric coordinate for the point is below minus this is not near
+// enough for an edge split either.
+constexpr double kMaxOutside = 0.5;
 
 // Barycentric coordinates of p's projection onto triangle abc; false for a flat triangle.
 bool barycentric(const Vec3 &a, const Vec3 &b, const Vec3 &c, const Vec3 &p, double (&l)[3]) {
@@ -37,7 +45,9 @@ class PointTaker {
   }
 
  private:
-  // Faces over which p lies, nearest plane first.
+  // Faces near p, by their corners as stored (a failed attempt re-adds faces under new
+  // indices): those p lies over first, nearest plane first, then those its projection misses
+  // by a little, which an edge split can still reach.
   void host_faces(uint32_t p) {
     const auto &w = g_.points.work;
     hosts_.clear();
@@ -48,44 +58,96 @@ class PointTaker {
         const Tri &t = g_.mesh.stored(f);
         double l[3];
         if (!barycentric(w[t[0]], w[t[1]], w[t[2]], w[p], l)) continue;
-        if (l[0] < 0 || l[1] < 0 || l[2] < 0) continue;
+        const double outside = -std::min({l[0], l[1], l[2], 0.0});
+        if (outside > kMaxOutside) continue;
         Vec3 n = normalized(cross(w[t[1]] - w[t[0]], w[t[2]] - w[t[0]]));
         double h = std::fabs(dot(w[p] - w[t[0]], n));
-        if (h <= limit) hosts_.push_back({h, f});
+        if (h <= limit) hosts_.push_back({outside > 0, h, t});
       }
     std::sort(hosts_.begin(), hosts_.end());
     hosts_.erase(std::unique(hosts_.begin(), hosts_.end()), hosts_.end());
   }
 
+  // The live face with these corners, or kNone.
+  uint32_t face_of(const Tri &t) const {
+    uint32_t fs[2];
+    const int n = g_.mesh.edge_faces(t[0], t[1], fs);
+    for (int i = 0; i < n; ++i) {
+      const Tri &s = g_.mesh.stored(fs[i]);
+      if (std::find(s.begin(), s.end(), t[2]) != s.end()) return fs[i];
+    }
+    return kNone;
+  }
+
   bool take(uint32_t p) {
     host_faces(p);
-    for (const auto &host : hosts_) {
-      uint32_t f = host.second;
-      if (!g_.mesh.alive(f)) continue;
-      Tri o = g_.mesh.oriented(f);
-      g_.mesh.remove(f);
-      const Tri parts[3] = {{o[0], o[1], p}, {o[1], o[2], p}, {o[2], o[0], p}};
-      uint32_t added[3];
-      int n = 0;
-      for (; n < 3; ++n) {
-        Verdict v = g_.judge.judge(parts[n], nullptr, 0, true);
-        TopologyJudge::count(v, g_.stats);
-        if (v != Verdict::Accept) break;
-        added[n] = g_.add_face(parts[n]);
-      }
-      if (n == 3) {
-        g_.stats.triangles_loops += 2;  // three faces replace one
-        return true;
-      }
-      // Undo: the host comes back as it was.
-      for (int k = 0; k < n; ++k) g_.mesh.remove(added[k]);
-      g_.add_face(o);
+    for (const Host &host : hosts_) {
+      const uint32_t f = face_of(host.corners);
+      if (host.outside || f == kNone) continue;
+      const Tri o = g_.mesh.oriented(f);
+      if (replace({f}, {Tri{o[0], o[1], p}, Tri{o[1], o[2], p}, Tri{o[2], o[0], p}})) return true;
     }
+    for (const Host &host : hosts_)
+      for (int i = 0; i < 3; ++i) {
+        // Looked up again each time: a failed split puts the face back under a new index.
+        const uint32_t f = face_of(host.corners);
+        if (f == kNone) break;
+        const Tri o = g_.mesh.oriented(f);
+        // The edge between corners i and i + 1, in the direction f runs along it.
+        const auto at = std::find(o.begin(), o.end(), host.corners[i]) - o.begin();
+        const bool forward = o[(at + 1) % 3] == host.corners[(i + 1) % 3];
+        const uint32_t u = forward ? o[at] : o[(at + 2) % 3];
+        const uint32_t v = forward ? o[(at + 1) % 3] : o[at];
+        const uint32_t w = forward ? o[(at + 2) % 3] : o[(at + 1) % 3];
+        uint32_t fs[2];
+        if (g_.mesh.edge_faces(u, v, fs) != 2) continue;
+        const uint32_t across = fs[0] == f ? fs[1] : fs[0];
+        uint32_t x = kNone;
+        for (uint32_t c : g_.mesh.stored(across))
+          if (c != u && c != v) x = c;
+        // f runs u -> v, so the consistently oriented face across runs v -> u.
+        if (replace({f, across}, {Tri{u, p, w}, Tri{p, v, w}, Tri{v, p, x}, Tri{p, u, x}}))
+          return true;
+      }
     return false;
   }
 
+  // Removes `old` and adds `parts` when every part passes the judgment; otherwise puts the old
+  // faces back (under new indices).
+  bool replace(std::initializer_list<uint32_t> old, std::initializer_list<Tri> parts) {
+    std::vector<Tri> kept;
+    for (uint32_t f : old) {
+      kept.push_back(g_.mesh.oriented(f));
+      g_.mesh.remove(f);
+    }
+    std::vector<uint32_t> added;
+    for (const Tri &t : parts) {
+      Verdict v = g_.judge.judge(t, nullptr, 0, true);
+      TopologyJudge::count(v, g_.stats);
+      if (v != Verdict::Accept) break;
+      added.push_back(g_.add_face(t));
+    }
+    if (added.size() == parts.size()) {
+      g_.stats.triangles_loops += parts.size() - old.size();
+      return true;
+    }
+    for (uint32_t f : added) g_.mesh.remove(f);
+    for (const Tri &t : kept) g_.add_face(t);
+    return false;
+  }
+
+  struct Host {
+    bool outside;  // p's projection misses the face: only an edge split can reach p
+    double height;
+    Tri corners;
+    bool operator<(const Host &o) const {
+      return std::tie(outside, height, corners) < std::tie(o.outside, o.height, o.corners);
+    }
+    bool operator==(const Host &o) const { return corners == o.corners; }
+  };
+
   GrowthState &g_;
-  std::vector<std::pair<double, uint32_t>> hosts_;
+  std::vector<Host> hosts_;
 };
 
 }  // namespace
