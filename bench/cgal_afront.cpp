@@ -14,13 +14,11 @@
 
 #include <array>
 #include <cstdio>
-#include <cstdlib>
-#include <exception>
 #include <string>
 #include <vector>
 
-#include "bench_common.hpp"
 #include "io/io.hpp"
+#include "peer_runner.hpp"
 
 namespace {
 
@@ -34,20 +32,11 @@ const char *const kUsage =
     "CGAL's defaults: radius_ratio_bound 5, beta 0.52 rad (about 30 degrees).\n";
 
 int run(int argc, char **argv) {
-  std::string input, out, result;
   double radius_ratio_bound = 5, beta = 0.52;  // CGAL's defaults
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    const bool has_value = i + 1 < argc;
-    if (a == "--mesh" && has_value) out = argv[++i];
-    else if (a == "--result" && has_value) result = argv[++i];
-    else if (a == "--radius-ratio-bound" && has_value) radius_ratio_bound = std::atof(argv[++i]);
-    else if (a == "--beta" && has_value) beta = std::atof(argv[++i]);
-    else if (a == "-h" || a == "--help") { std::fputs(kUsage, stdout); return 0; }
-    else if (a[0] != '-' && input.empty()) input = a;
-    else { std::fprintf(stderr, "cgal_afront: bad argument %s\n%s", a.c_str(), kUsage); return 2; }
-  }
-  if (input.empty()) { std::fputs(kUsage, stderr); return 2; }
+  RunnerArgs args("cgal_afront", kUsage);
+  args.option("--radius-ratio-bound", radius_ratio_bound).option("--beta", beta);
+  if (const int code = args.parse(argc, argv); code >= 0) return code;
+  const std::string &input = args.input;
 
   ResultWriter r;
   r.put("method", "cgal_afront").put("input", input).put("cgal_version", CGAL_VERSION_STR);
@@ -77,10 +66,7 @@ int run(int argc, char **argv) {
   tri.reserve(3 * facets.size());
   for (const auto &f : facets)
     for (std::size_t v : f) tri.push_back(uint32_t(v));
-  r.put("hash", hex64(fnv1a(tri.data(), tri.size())));
-  if (!out.empty()) moa::io::write_mesh(out, moa::io::MeshData{std::move(xyz), std::move(tri)});
-  r.put("status", "ok");
-  r.append_to(result);
+  finish_run(r, moa::io::MeshData{std::move(xyz), std::move(tri)}, args);
   std::printf("%s: %zu points, %zu triangles, %.3f s (read %.3f s), peak %.1f MB (%.0f B/point)\n",
               input.c_str(), points.size(), facets.size(), recon_ms / 1000, read_ms / 1000,
               double(rss_peak) / 1e6, points.empty() ? 0.0 : double(rss_peak) / double(points.size()));
@@ -89,11 +75,4 @@ int run(int argc, char **argv) {
 
 }  // namespace
 
-int main(int argc, char **argv) {
-  try {
-    return run(argc, argv);
-  } catch (const std::exception &e) {
-    std::fprintf(stderr, "cgal_afront: %s\n", e.what());
-    return 1;
-  }
-}
+int main(int argc, char **argv) { return runner_main("cgal_afront", run, argc, argv); }

@@ -24,14 +24,13 @@
 
 #include <cstdio>
 #include <cstdlib>
-#include <exception>
 #include <numeric>
 #include <sstream>
 #include <string>
 #include <vector>
 
-#include "bench_common.hpp"
 #include "io/io.hpp"
+#include "peer_runner.hpp"
 
 namespace {
 
@@ -55,28 +54,18 @@ std::vector<double> parse_list(const std::string &text) {
 }
 
 int run(int argc, char **argv) {
-  std::string input, method, normals_path, save_normals, mesh_path, result;
+  std::string method, normals_path, save_normals;
   double shared_normals_ms = -1;  // >= 0: the normals come from another run that took this long
   std::vector<double> radius_factors = {1.5, 3, 6};
   int depth = 9, normal_k = 30, orient_k = 100;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    const bool has_value = i + 1 < argc;
-    if (a == "--method" && has_value) method = argv[++i];
-    else if (a == "--normals" && has_value) normals_path = argv[++i];
-    else if (a == "--normals-ms" && has_value) shared_normals_ms = std::atof(argv[++i]);
-    else if (a == "--save-normals" && has_value) save_normals = argv[++i];
-    else if (a == "--mesh" && has_value) mesh_path = argv[++i];
-    else if (a == "--result" && has_value) result = argv[++i];
-    else if (a == "--radii" && has_value) radius_factors = parse_list(argv[++i]);
-    else if (a == "--depth" && has_value) depth = std::atoi(argv[++i]);
-    else if (a == "--normal-k" && has_value) normal_k = std::atoi(argv[++i]);
-    else if (a == "--orient-k" && has_value) orient_k = std::atoi(argv[++i]);
-    else if (a == "-h" || a == "--help") { std::fputs(kUsage, stdout); return 0; }
-    else if (a[0] != '-' && input.empty()) input = a;
-    else { std::fprintf(stderr, "open3d_recon: bad argument %s\n%s", a.c_str(), kUsage); return 2; }
-  }
-  if (input.empty() || (method != "bpa" && method != "poisson")) { std::fputs(kUsage, stderr); return 2; }
+  RunnerArgs args("open3d_recon", kUsage);
+  args.option("--method", method).option("--normals", normals_path);
+  args.option("--normals-ms", shared_normals_ms).option("--save-normals", save_normals);
+  args.option("--radii", [&](const char *v) { radius_factors = parse_list(v); });
+  args.option("--depth", depth).option("--normal-k", normal_k).option("--orient-k", orient_k);
+  if (const int code = args.parse(argc, argv); code >= 0) return code;
+  if (method != "bpa" && method != "poisson") return args.usage_error();
+  const std::string &input = args.input;
   open3d::utility::SetVerbosityLevel(open3d::utility::VerbosityLevel::Error);
 
   ResultWriter r;
@@ -91,8 +80,7 @@ int run(int argc, char **argv) {
   for (size_t i = 0; i < n; ++i) cloud.points_[i] = {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
   const bool given_normals = !normals_path.empty();
   if (given_normals) {
-    const std::vector<double> normals = moa::io::read_points(normals_path);
-    if (normals.size() != xyz.size()) throw std::runtime_error(normals_path + ": not one normal per point");
+    const std::vector<double> normals = read_normals(normals_path, xyz);
     cloud.normals_.resize(n);
     for (size_t i = 0; i < n; ++i) cloud.normals_[i] = {normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]};
   }
@@ -155,10 +143,7 @@ int run(int argc, char **argv) {
   out.triangles.reserve(3 * mesh->triangles_.size());
   for (const Eigen::Vector3i &f : mesh->triangles_)
     out.triangles.insert(out.triangles.end(), {uint32_t(f[0]), uint32_t(f[1]), uint32_t(f[2])});
-  r.put("hash", hex64(fnv1a(out.triangles.data(), out.triangles.size())));
-  if (!mesh_path.empty()) moa::io::write_mesh(mesh_path, out);
-  r.put("status", "ok");
-  r.append_to(result);
+  finish_run(r, out, args);
   std::printf("%s: %zu points, %zu triangles, %.3f s + %.3f s normals, peak %.1f MB (%.0f B/point)\n",
               input.c_str(), n, mesh->triangles_.size(), recon_ms / 1000, normals_ms / 1000,
               double(rss_peak) / 1e6, n ? double(rss_peak) / double(n) : 0.0);
@@ -167,11 +152,4 @@ int run(int argc, char **argv) {
 
 }  // namespace
 
-int main(int argc, char **argv) {
-  try {
-    return run(argc, argv);
-  } catch (const std::exception &e) {
-    std::fprintf(stderr, "open3d_recon: %s\n", e.what());
-    return 1;
-  }
-}
+int main(int argc, char **argv) { return runner_main("open3d_recon", run, argc, argv); }

@@ -25,13 +25,11 @@
 
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <exception>
 #include <string>
 #include <vector>
 
-#include "bench_common.hpp"
 #include "io/io.hpp"
+#include "peer_runner.hpp"
 
 namespace {
 
@@ -60,24 +58,15 @@ double average_spacing(const pcl::PointCloud<pcl::PointXYZ>::Ptr &cloud) {
 }
 
 int run(int argc, char **argv) {
-  std::string input, normals_path, mesh_path, result;
+  std::string normals_path;
   double mu = 2.5, radius_factor = 7.5;
   int max_nn = 100, normal_k = 20;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    const bool has_value = i + 1 < argc;
-    if (a == "--normals" && has_value) normals_path = argv[++i];
-    else if (a == "--mesh" && has_value) mesh_path = argv[++i];
-    else if (a == "--result" && has_value) result = argv[++i];
-    else if (a == "--mu" && has_value) mu = std::atof(argv[++i]);
-    else if (a == "--radius-factor" && has_value) radius_factor = std::atof(argv[++i]);
-    else if (a == "--max-nn" && has_value) max_nn = std::atoi(argv[++i]);
-    else if (a == "--normal-k" && has_value) normal_k = std::atoi(argv[++i]);
-    else if (a == "-h" || a == "--help") { std::fputs(kUsage, stdout); return 0; }
-    else if (a[0] != '-' && input.empty()) input = a;
-    else { std::fprintf(stderr, "pcl_gp3: bad argument %s\n%s", a.c_str(), kUsage); return 2; }
-  }
-  if (input.empty()) { std::fputs(kUsage, stderr); return 2; }
+  RunnerArgs args("pcl_gp3", kUsage);
+  args.option("--normals", normals_path).option("--mu", mu);
+  args.option("--radius-factor", radius_factor).option("--max-nn", max_nn);
+  args.option("--normal-k", normal_k);
+  if (const int code = args.parse(argc, argv); code >= 0) return code;
+  const std::string &input = args.input;
 
   ResultWriter r;
   r.put("method", "pcl_gp3").put("input", input).put("pcl_version", PCL_VERSION_PRETTY);
@@ -94,8 +83,7 @@ int run(int argc, char **argv) {
   pcl::PointCloud<pcl::Normal>::Ptr normals(new pcl::PointCloud<pcl::Normal>);
   const bool given_normals = !normals_path.empty();
   if (given_normals) {
-    const std::vector<double> given = moa::io::read_points(normals_path);
-    if (given.size() != xyz.size()) throw std::runtime_error(normals_path + ": not one normal per point");
+    const std::vector<double> given = read_normals(normals_path, xyz);
     normals->resize(n);
     for (size_t i = 0; i < n; ++i)
       (*normals)[i] = pcl::Normal(float(given[3 * i]), float(given[3 * i + 1]), float(given[3 * i + 2]));
@@ -150,10 +138,7 @@ int run(int argc, char **argv) {
     for (auto v : p.vertices) tri.push_back(uint32_t(v));
   }
   r.put("triangles", tri.size() / 3).put("non_triangles", skipped);
-  r.put("hash", hex64(fnv1a(tri.data(), tri.size())));
-  if (!mesh_path.empty()) moa::io::write_mesh(mesh_path, moa::io::MeshData{std::move(xyz), std::move(tri)});
-  r.put("status", "ok");
-  r.append_to(result);
+  finish_run(r, moa::io::MeshData{std::move(xyz), std::move(tri)}, args);
   std::printf("%s: %zu points, %zu triangles, %.3f s + %.3f s normals, peak %.1f MB (%.0f B/point)\n",
               input.c_str(), n, polygons.size() - skipped, recon_ms / 1000, normals_ms / 1000,
               double(rss_peak) / 1e6, n ? double(rss_peak) / double(n) : 0.0);
@@ -162,11 +147,4 @@ int run(int argc, char **argv) {
 
 }  // namespace
 
-int main(int argc, char **argv) {
-  try {
-    return run(argc, argv);
-  } catch (const std::exception &e) {
-    std::fprintf(stderr, "pcl_gp3: %s\n", e.what());
-    return 1;
-  }
-}
+int main(int argc, char **argv) { return runner_main("pcl_gp3", run, argc, argv); }

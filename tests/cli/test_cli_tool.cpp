@@ -1,96 +1,25 @@
 // The `moa` executable, run as a separate process: its commands, its files and its exit codes
 // with their one-line messages. Arguments: the tool's path and a scratch folder.
 #include <sys/stat.h>
-#include <sys/wait.h>
 
-#include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <string>
 #include <vector>
 
-#include "cli/cmocka_cxx.hpp"
+#include "cli/tool_runner.hpp"
 #include "moa/moa.h"
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using namespace moa::test;
 
-std::string g_tool, g_dir;
+Tool g_moa;
 
-struct Run {
-  int code = -1;
-  std::string out, err;
-};
-
-std::string quote(const std::string &s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-std::string read_file(const std::string &path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-void write_file(const std::string &path, const std::string &text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-}
-
-std::string path(const std::string &name) { return g_dir + "/" + name; }
-
-// Runs `moa ARGS` with stdout and stderr captured in files (stderr is then no terminal: no
-// progress bar).
-Run moa(const std::string &args) {
-  const std::string out = path("stdout.txt"), err = path("stderr.txt");
-  const std::string command = quote(g_tool) + " " + args + " >" + quote(out) + " 2>" + quote(err);
-  const int status = std::system(command.c_str());
-  Run r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = read_file(out);
-  r.err = read_file(err);
-  return r;
-}
-
-bool has(const std::string &text, const std::string &part) {
-  return text.find(part) != std::string::npos;
-}
-
-#define EXPECT_HAS(text, part) \
-  if (!has(text, part)) fail_msg("expected '%s' in: %s", std::string(part).c_str(), (text).c_str())
-
-// An error: the exit code and exactly one line on stderr holding every fragment.
-void expect_error(const Run &r, int code, std::initializer_list<std::string> fragments) {
-  if (r.code != code) fail_msg("exit code %d, expected %d; stderr: %s", r.code, code, r.err.c_str());
-  size_t lines = 0;
-  for (char c : r.err) lines += c == '\n';
-  if (lines != 1 || r.err.back() != '\n' || r.err.compare(0, 5, "moa: ") != 0)
-    fail_msg("expected one line 'moa: ...' on stderr, got: %s", r.err.c_str());
-  for (const std::string &f : fragments) EXPECT_HAS(r.err, f);
-}
-
-// 800 points spread evenly over the unit sphere (a Fibonacci lattice).
-std::string sphere_points() {
-  const std::string file = path("sphere.xyz");
-  std::string text;
-  const int n = 800;
-  const double golden = kPi * (3 - std::sqrt(5.0));
-  char line[128];
-  for (int i = 0; i < n; ++i) {
-    const double z = 1 - 2 * (i + 0.5) / n, r = std::sqrt(1 - z * z), a = golden * i;
-    std::snprintf(line, sizeof line, "%.17g %.17g %.17g\n", r * std::cos(a), r * std::sin(a), z);
-    text += line;
-  }
-  write_file(file, text);
-  return file;
-}
+std::string path(const std::string &name) { return g_moa.path(name); }
+Run moa(const std::string &args) { return g_moa.run(args); }
 
 int setup(void **) {
-  ::mkdir(g_dir.c_str(), 0755);
+  ::mkdir(g_moa.dir.c_str(), 0755);
   return 0;
 }
 
@@ -127,7 +56,8 @@ void test_params(void **) {
 }
 
 void test_reconstruct_and_check(void **) {
-  const std::string input = sphere_points(), mesh = path("sphere.ply"), stats = path("stats.json");
+  const std::string input = write_sphere_points(path("sphere.xyz")), mesh = path("sphere.ply"),
+                    stats = path("stats.json");
   std::remove(mesh.c_str());
   Run r = moa("reconstruct " + quote(input) + " -o " + quote(mesh) + " --stats " + quote(stats) +
               " --param threads=1");
@@ -183,7 +113,7 @@ void test_check_known_meshes(void **) {
 }
 
 void test_errors(void **) {
-  const std::string input = sphere_points(), out = path("out.ply");
+  const std::string input = write_sphere_points(path("sphere.xyz")), out = path("out.ply");
   expect_error(moa("reconstruct " + quote(path("missing.xyz")) + " -o " + quote(out)), 3,
                {"missing.xyz"});
   write_file(path("bad.xyz"), "0 0 0\n1 0 0\n1 2\n");
@@ -214,12 +144,7 @@ void test_errors(void **) {
 }  // namespace
 
 int main(int argc, char **argv) {
-  if (argc < 3) {
-    std::fprintf(stderr, "usage: %s PATH_TO_MOA SCRATCH_DIR\n", argv[0]);
-    return 2;
-  }
-  g_tool = argv[1];
-  g_dir = argv[2];
+  if (!tool_from_args(argc, argv, g_moa)) return 2;
   const CMUnitTest tests[] = {
       cmocka_unit_test(test_version_and_help),
       cmocka_unit_test(test_params),

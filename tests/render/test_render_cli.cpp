@@ -2,15 +2,11 @@
 // as separate processes; their pictures are decoded and looked at. Arguments: the tool's path
 // and a scratch folder.
 #include <sys/stat.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
-#include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <string>
 
-#include "cli/cmocka_cxx.hpp"
+#include "cli/tool_runner.hpp"
 #include "meshes.hpp"
 #include "render/render.hpp"
 
@@ -18,67 +14,12 @@ namespace {
 
 namespace render = moa::render;
 
-std::string g_tool, g_dir;
+using namespace moa::test;
 
-struct Run {
-  int code = -1;
-  std::string out, err;
-};
+Tool g_moa;
 
-std::string quote(const std::string &s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-std::string read_file(const std::string &path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-void write_file(const std::string &path, const std::string &text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-}
-
-bool exists(const std::string &path) { return ::access(path.c_str(), F_OK) == 0; }
-
-std::string path(const std::string &name) { return g_dir + "/" + name; }
-
-Run moa(const std::string &args) {
-  const std::string out = path("stdout.txt"), err = path("stderr.txt");
-  const int status =
-      std::system((quote(g_tool) + " " + args + " >" + quote(out) + " 2>" + quote(err)).c_str());
-  Run r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = read_file(out);
-  r.err = read_file(err);
-  return r;
-}
-
-bool has(const std::string &text, const std::string &part) {
-  return text.find(part) != std::string::npos;
-}
-
-#define EXPECT_HAS(text, part) \
-  if (!has(text, part)) fail_msg("expected '%s' in: %s", std::string(part).c_str(), (text).c_str())
-
-void expect_ok(const Run &r) {
-  if (r.code != 0) fail_msg("exit code %d; stderr: %s", r.code, r.err.c_str());
-}
-
-// An error: the exit code and one line "moa: ..." on stderr holding every fragment.
-void expect_error(const Run &r, int code, std::initializer_list<std::string> fragments) {
-  if (r.code != code)
-    fail_msg("exit code %d, expected %d; stderr: %s", r.code, code, r.err.c_str());
-  size_t lines = 0;
-  for (char c : r.err) lines += c == '\n';
-  if (lines != 1 || r.err.compare(0, 5, "moa: ") != 0)
-    fail_msg("expected one line 'moa: ...' on stderr, got: %s", r.err.c_str());
-  for (const std::string &f : fragments) EXPECT_HAS(r.err, f);
-}
+std::string path(const std::string &name) { return g_moa.path(name); }
+Run moa(const std::string &args) { return g_moa.run(args); }
 
 std::string cube_file() {
   const std::string file = path("cube.off");
@@ -177,24 +118,9 @@ void test_render_errors(void **) {
                {"x.png", "cannot write"});
 }
 
-// 800 points spread evenly over the unit sphere (a Fibonacci lattice).
-std::string sphere_points() {
-  const std::string file = path("sphere.xyz");
-  std::string text;
-  const int n = 800;
-  const double golden = 3.14159265358979323846 * (3 - std::sqrt(5.0));
-  char line[128];
-  for (int i = 0; i < n; ++i) {
-    const double z = 1 - 2 * (i + 0.5) / n, r = std::sqrt(1 - z * z), a = golden * i;
-    std::snprintf(line, sizeof line, "%.17g %.17g %.17g\n", r * std::cos(a), r * std::sin(a), z);
-    text += line;
-  }
-  write_file(file, text);
-  return file;
-}
-
 void test_reconstruct_render(void **) {
-  const std::string input = sphere_points(), mesh = path("sphere.ply"), png = path("sphere.png");
+  const std::string input = write_sphere_points(path("sphere.xyz")), mesh = path("sphere.ply"),
+                    png = path("sphere.png");
   std::remove(png.c_str());
   Run r = moa("reconstruct " + quote(input) + " -o " + quote(mesh) + " --render " + quote(png));
   expect_ok(r);
@@ -242,13 +168,8 @@ void test_check_report(void **) {
 }  // namespace
 
 int main(int argc, char **argv) {
-  if (argc < 3) {
-    std::fprintf(stderr, "usage: %s PATH_TO_MOA SCRATCH_DIR\n", argv[0]);
-    return 2;
-  }
-  g_tool = argv[1];
-  g_dir = argv[2];
-  ::mkdir(g_dir.c_str(), 0755);
+  if (!tool_from_args(argc, argv, g_moa)) return 2;
+  ::mkdir(g_moa.dir.c_str(), 0755);
   const CMUnitTest tests[] = {
       cmocka_unit_test(test_help),
       cmocka_unit_test(test_render_cube),
