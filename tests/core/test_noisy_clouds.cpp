@@ -1,6 +1,7 @@
 // Noisy clouds (src/core/smoothing.hpp): the noise estimate must tell scatter from curvature,
-// and clouds whose scatter reaches the point spacing must still come out closed, with their
-// genus, every point a vertex and the contract held on the caller's coordinates.
+// and clouds whose scatter reaches the point spacing must still come out closed with their
+// genus (or as one disk, for an open patch), every point a vertex and the contract held on the
+// caller's coordinates.
 #include "core/kd_tree.hpp"
 #include "core/point_set.hpp"
 #include "core/smoothing.hpp"
@@ -50,6 +51,20 @@ const Case &rough_genus3_case() {
   Points p = genus_surface(3, 0.05, 73);
   add_noise(p, 0.5 * 0.05 / bbox_diagonal(p), 73);
   static const Case c = make_case("genus-3 surface, noise 0.5 spacings", p);
+  return c;
+}
+
+// An open surface: its border must stay open. 3000 points on the unit hemisphere are 0.046
+// apart; the box diagonal is 3: noise of 1.5 % of it is a standard deviation of one spacing.
+const Case &rough_hemisphere_case() {
+  static const Case c = make_case("hemisphere, noise 1 spacing", noisy(hemisphere(3000), 0.015, 81));
+  return c;
+}
+
+// Sharp edges and corners under noise: a cube sampled on a 30 x 30 grid per face (spacing
+// 0.034, diagonal 1.73), noise of 1 % of the diagonal, half a spacing.
+const Case &rough_cube_case() {
+  static const Case c = make_case("cube, noise 0.5 spacings", noisy(cube_grid(30), 0.01, 82));
   return c;
 }
 
@@ -118,8 +133,26 @@ void test_rough_sphere_closed(void **) { MOA_EXPECT(closed_failure(rough_sphere_
 void test_rough_torus_closed(void **) { MOA_EXPECT(closed_failure(rough_torus_case(), 1)); }
 void test_rough_genus3_closed(void **) { MOA_EXPECT(closed_failure(rough_genus3_case(), 3)); }
 
+void test_rough_hemisphere_disk(void **) { MOA_EXPECT(disk_failure(rough_hemisphere_case())); }
+
+// Closed with genus 0; a point or two at a corner may stand too far off every face to be taken
+// in, so only nearly every point must be used.
+void test_rough_cube_closed(void **) {
+  const Case &c = rough_cube_case();
+  const ContractReport &r = c.report;
+  assert_true(c.run.error.empty());
+  if (!r.closed() || r.components != 1 || r.genus_sum != 0)
+    fail_msg("rough cube: %zu boundary edges, %zu components, genus %ld (expected closed, 1, 0)",
+             r.boundary_edges, r.components, r.genus_sum);
+  const std::size_t points = c.points.size() / 3;
+  if (r.vertices_used * 1000 < points * 999)
+    fail_msg("rough cube: only %zu of %zu points used", r.vertices_used, points);
+}
+
 }  // namespace
 
+MOA_CONTRACT_TESTS(rough_hemisphere)
+MOA_CONTRACT_TESTS(rough_cube)
 MOA_CONTRACT_TESTS(rough_sphere)
 MOA_CONTRACT_TESTS(rough_torus)
 MOA_CONTRACT_TESTS(rough_genus3)
@@ -132,6 +165,10 @@ int main(void) {
       cmocka_unit_test(test_rough_sphere_closed),
       cmocka_unit_test(test_rough_torus_closed),
       cmocka_unit_test(test_rough_genus3_closed),
+      cmocka_unit_test(test_rough_hemisphere_disk),
+      cmocka_unit_test(test_rough_cube_closed),
+      MOA_CONTRACT_ENTRIES(rough_hemisphere),
+      MOA_CONTRACT_ENTRIES(rough_cube),
       MOA_CONTRACT_ENTRIES(rough_sphere),
       MOA_CONTRACT_ENTRIES(rough_torus),
       MOA_CONTRACT_ENTRIES(rough_genus3),
