@@ -1,7 +1,9 @@
 // The kd-tree (nanoflann) over work coordinates, shared by the neighbour and smoothing stages.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include <nanoflann.hpp>
@@ -39,6 +41,32 @@ class KdIndex {
   std::size_t nearest(const Vec3 &q, std::size_t k, uint32_t *idx, double *d2) const {
     double xyz[3] = {q.x, q.y, q.z};
     return tree_.knnSearch(xyz, k, idx, d2);
+  }
+  // The k nearest points to q by (distance, index), for large k: nanoflann's k-NN search keeps
+  // its results in a sorted array (cost k^2), a ball search costs about k. The ball is sized
+  // from the nearest few and grown until it holds k points.
+  void nearest_many(const Vec3 &q, std::size_t k, std::vector<std::pair<uint32_t, double>> &out) const {
+    constexpr std::size_t kProbe = 16;
+    uint32_t idx[kProbe];
+    double d2[kProbe];
+    const std::size_t got = nearest(q, std::min(k, kProbe), idx, d2);
+    double radius2 = std::max(d2[got - 1], 1e-300) * double(k) / double(got) * 2.0;
+    for (within(q, radius2, out); out.size() < k && out.size() < cloud_.p.size();
+         within(q, radius2, out))
+      radius2 *= 2.0;
+    auto closer = [](const std::pair<uint32_t, double> &a, const std::pair<uint32_t, double> &b) {
+      return a.second != b.second ? a.second < b.second : a.first < b.first;
+    };
+    const std::size_t keep = std::min(k, out.size());
+    std::partial_sort(out.begin(), out.begin() + std::ptrdiff_t(keep), out.end(), closer);
+    out.resize(keep);
+  }
+  // Every point closer to q than sqrt(radius2), with its squared distance, in the tree's
+  // (deterministic) order; cheaper than a k-NN query when many points are wanted.
+  void within(const Vec3 &q, double radius2, std::vector<std::pair<uint32_t, double>> &out) const {
+    double xyz[3] = {q.x, q.y, q.z};
+    out.clear();
+    tree_.radiusSearch(xyz, radius2, out, nanoflann::SearchParams(32, 0.0f, false));
   }
 
  private:

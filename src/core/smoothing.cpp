@@ -34,6 +34,9 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
+// Neighbours whose distances size the smoothing ball.
+constexpr unsigned kProbeNeighbors = 16;
+
 // Thickness over width of a neighbourhood: the spread off the plane against the larger spread
 // in it, both as standard deviations.
 double flatness_ratio(const PcaFrame &f) {
@@ -89,11 +92,11 @@ NoiseEstimate estimate_noise(const KdIndex &index) {
   std::vector<double> ratios(samples * kScaleCount, -1.0);
   tbb::parallel_for(std::size_t(0), samples, [&](std::size_t s) {
     const std::size_t i = s * step;
-    std::vector<uint32_t> idx(largest + 1), others;
-    std::vector<double> d2(largest + 1);
-    std::size_t got = index.nearest(work[i], largest + 1, idx.data(), d2.data());
-    for (std::size_t j = 0; j < got; ++j)
-      if (idx[j] != i) others.push_back(idx[j]);
+    std::vector<std::pair<uint32_t, double>> found;
+    index.nearest_many(work[i], largest + 1, found);
+    std::vector<uint32_t> others;
+    for (const auto &f : found)
+      if (f.first != i) others.push_back(f.first);
     for (std::size_t c = 0; c < kScaleCount; ++c)
       if (kScales[c] <= others.size())
         ratios[s * kScaleCount + c] =
@@ -123,23 +126,31 @@ std::vector<Vec3> smoothed_points(const KdIndex &index, unsigned k,
   const std::vector<Vec3> &work = index.points();
   const std::size_t n = work.size();
   k = unsigned(std::min<std::size_t>(k, n - 1));
+  const unsigned probe = std::min(kProbeNeighbors, k);
   std::vector<Vec3> out(n);
   const std::size_t block = 16384;
   for (std::size_t start = 0; start < n; start += block) {
     const std::size_t end = std::min(n, start + block);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(start, end, 64),
-                      [&](const tbb::blocked_range<std::size_t> &r) {
-                        std::vector<uint32_t> idx(k + 1), others;
-                        std::vector<double> d2(k + 1);
-                        for (std::size_t i = r.begin(); i != r.end(); ++i) {
-                          std::size_t got = index.nearest(work[i], k + 1, idx.data(), d2.data());
-                          others.clear();
-                          for (std::size_t j = 0; j < got; ++j)
-                            if (idx[j] != i) others.push_back(idx[j]);
-                          out[i] = project_onto_quadric(work, uint32_t(i), others.data(),
-                                                        unsigned(others.size()));
-                        }
-                      });
+    tbb::parallel_for(
+        tbb::blocked_range<std::size_t>(start, end, 64),
+        [&](const tbb::blocked_range<std::size_t> &r) {
+          std::vector<uint32_t> idx(probe + 1), others;
+          std::vector<double> d2(probe + 1);
+          std::vector<std::pair<uint32_t, double>> found;
+          for (std::size_t i = r.begin(); i != r.end(); ++i) {
+            // A k-NN query for hundreds of points costs k^2 in nanoflann; the ball that holds
+            // about k points of a surface, sized from the nearest few, costs k.
+            std::size_t got = index.nearest(work[i], probe + 1, idx.data(), d2.data());
+            const double radius2 = d2[got - 1] * double(k) / double(got - 1);
+            index.within(work[i], radius2, found);
+            // A thick noisy shell holds more than k points in that ball: every s-th will do.
+            const std::size_t stride = std::max<std::size_t>(1, found.size() / (2 * k));
+            others.clear();
+            for (std::size_t j = 0; j < found.size(); j += stride)
+              if (found[j].first != i) others.push_back(found[j].first);
+            out[i] = project_onto_quadric(work, uint32_t(i), others.data(), unsigned(others.size()));
+          }
+        });
     tick(double(end) / double(n));
   }
   return out;
