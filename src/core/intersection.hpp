@@ -50,6 +50,7 @@ class CrossingIndex {
   void *device_ = nullptr;
   void *scene_ = nullptr;
   uint32_t committed_ = 0;  // faces [0, committed_) are in the scene
+  const FaceRecord *shared_records_ = nullptr;  // the mesh's faces as the scene reads them
   double cell_ = 0;
   std::unordered_map<uint64_t, std::vector<uint32_t>> grid_;
   std::vector<uint32_t> oversized_;  // pending faces spanning too many cells

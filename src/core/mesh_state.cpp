@@ -6,6 +6,9 @@
 namespace moa {
 
 MeshState::MeshState(std::size_t vertex_count) : around_(vertex_count) {
+  // A closed surface has about two faces per vertex; the loop module adds and removes some.
+  // Reserved address space costs no memory until used, and a move of the faces costs a copy
+  // and a rebuild of the crossing index, which reads them in place.
   faces_.reserve(vertex_count * 2 + vertex_count / 4 + 64);
 }
 

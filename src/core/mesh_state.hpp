@@ -82,6 +82,8 @@ class MeshState {
   std::size_t face_count() const { return faces_.size(); }
   bool alive(uint32_t f) const { return alive_[f] != 0; }
   const Tri &stored(uint32_t f) const { return faces_[f].corners; }
+  // Every face ever added, in order, for Embree to read in place. add() may move them.
+  const FaceRecord *records() const { return faces_.data(); }
   // The face as currently oriented (stored order, reversed when its component was flipped).
   Tri oriented(uint32_t f);
 
