@@ -1,6 +1,6 @@
 // Stage 2: neighbours. A nanoflann kd-tree over the Morton-ordered points answers the k-NN
-// queries in parallel blocks; each point also gets its spacing and a PCA plane, which the
-// topology judgment uses as the local reference plane for segments that have no triangle yet.
+// queries in parallel blocks; each point also gets its spacing. The PCA plane of a point and its
+// neighbours is the topology judgment's local reference plane.
 #include "core/neighbors.hpp"
 
 #include <tbb/parallel_for.h>
@@ -30,7 +30,8 @@ using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<do
 
 constexpr unsigned kSpacingNeighbors = 6;
 
-Vec3 plane_normal(const std::vector<Vec3> &p, uint32_t self, const uint32_t *nb, unsigned k) {
+Vec3 least_squares_normal(const std::vector<Vec3> &p, uint32_t self, const uint32_t *nb,
+                          unsigned k) {
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
   auto vec = [&](uint32_t i) { return Eigen::Vector3d(p[i].x, p[i].y, p[i].z); };
   mean += vec(self);
@@ -59,7 +60,6 @@ Neighborhood compute_neighbors(const PointSet &points, unsigned k,
   nb.k = unsigned(std::min<std::size_t>(k, n - 1));
   nb.knn.resize(n * nb.k);
   nb.spacing.resize(n);
-  nb.normal.resize(n);
 
   Cloud cloud{p};
   Tree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(12));
@@ -91,12 +91,15 @@ Neighborhood compute_neighbors(const PointSet &points, unsigned k,
                             if (j < ns) sum += std::sqrt(tmp[j].first);
                           }
                           nb.spacing[i] = float(sum / std::max(1u, ns));
-                          nb.normal[i] = plane_normal(p, uint32_t(i), out, m);
                         }
                       });
     tick(double(end) / double(n));
   }
   return nb;
+}
+
+Vec3 plane_normal(const PointSet &points, const Neighborhood &nb, uint32_t i) {
+  return least_squares_normal(points.work, i, nb.of(i), nb.k);
 }
 
 }  // namespace moa
