@@ -89,8 +89,17 @@ CrossingIndex::CrossingIndex(const PointSet &points, double cell_size)
   device_ = shared_device();
 }
 
-CrossingIndex::~CrossingIndex() {
+CrossingIndex::~CrossingIndex() { release(); }
+
+void CrossingIndex::release() {
   if (scene_) rtcReleaseScene(static_cast<RTCScene>(scene_));
+  scene_ = nullptr;
+  committed_ = 0;
+  std::vector<float>().swap(vertices_);
+  std::vector<uint32_t>().swap(stamp_);
+  std::vector<uint32_t>().swap(found_);
+  std::vector<uint32_t>().swap(oversized_);
+  grid_ = {};
 }
 
 void CrossingIndex::bounds(const Tri &t, Vec3 &lo, Vec3 &hi) const {

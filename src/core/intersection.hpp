@@ -31,6 +31,10 @@ class CrossingIndex {
   // Registers face f (already added to mesh).
   void face_added(uint32_t f, MeshState &mesh);
 
+  // Frees the Embree scene and the index's buffers once the mesh is complete; no query may
+  // follow.
+  void release();
+
   std::size_t rebuilds() const { return rebuilds_; }
   double milliseconds() const { return seconds_ * 1000.0; }
   std::size_t memory_bytes() const;
