@@ -9,7 +9,13 @@ MeshState::MeshState(std::size_t vertex_count) : around_(vertex_count) {
   // A closed surface has about two faces per vertex; the loop module adds and removes some.
   // Reserved address space costs no memory until used, and a move of the faces costs a copy
   // and a rebuild of the crossing index, which reads them in place.
-  faces_.reserve(vertex_count * 2 + vertex_count / 4 + 64);
+  const std::size_t expected_faces = vertex_count * 2 + vertex_count / 4 + 64;
+  faces_.reserve(expected_faces);
+  // The per-face vectors too: grown by doubling, each would leave its old copies as holes in
+  // the heap.
+  alive_.reserve(expected_faces);
+  parent_.reserve(expected_faces);
+  flip_.reserve(expected_faces);
 }
 
 uint32_t MeshState::find(uint32_t f, uint32_t &parity) {
