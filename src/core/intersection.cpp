@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstddef>
 #include <memory>
 #include <mutex>
 #include <new>
@@ -89,8 +90,17 @@ CrossingIndex::CrossingIndex(const PointSet &points, double cell_size)
   device_ = shared_device();
 }
 
-CrossingIndex::~CrossingIndex() {
+CrossingIndex::~CrossingIndex() { release(); }
+
+void CrossingIndex::release() {
   if (scene_) rtcReleaseScene(static_cast<RTCScene>(scene_));
+  scene_ = nullptr;
+  committed_ = 0;
+  std::vector<float>().swap(vertices_);
+  std::vector<uint32_t>().swap(stamp_);
+  std::vector<uint32_t>().swap(found_);
+  std::vector<uint32_t>().swap(oversized_);
+  grid_ = {};
 }
 
 void CrossingIndex::bounds(const Tri &t, Vec3 &lo, Vec3 &hi) const {
@@ -132,13 +142,13 @@ void CrossingIndex::rebuild(MeshState &mesh) {
   rtcSetSceneBuildQuality(scene.get(), RTC_BUILD_QUALITY_MEDIUM);
   rtcSetSharedGeometryBuffer(geom.get(), RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                              vertices_.data(), 0, 3 * sizeof(float), points_.size());
+  // Embree reads the mesh's own face records rather than a copy (removed faces included: every
+  // query skips them), so the index costs no memory; face_added rebuilds if they move.
   const std::size_t count = mesh.face_count();
-  auto *idx = static_cast<uint32_t *>(rtcSetNewGeometryBuffer(
-      geom.get(), RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), count));
-  if (!idx) throw std::bad_alloc();
-  for (std::size_t f = 0; f < count; ++f)  // removed faces become degenerate, which Embree skips
-    for (int k = 0; k < 3; ++k)
-      idx[3 * f + k] = mesh.alive(uint32_t(f)) ? mesh.stored(uint32_t(f))[k] : 0;
+  shared_records_ = mesh.records();
+  rtcSetSharedGeometryBuffer(geom.get(), RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                             shared_records_, offsetof(FaceRecord, corners), sizeof(FaceRecord),
+                             count);
   rtcCommitGeometry(geom.get());
   rtcAttachGeometry(scene.get(), geom.get());
   geom.reset();  // the scene holds it now
@@ -156,7 +166,9 @@ void CrossingIndex::face_added(uint32_t f, MeshState &mesh) {
   if (stamp_.size() <= f) stamp_.resize(std::size_t(f) * 2 + 64, 0);
   grid_insert(f, mesh.stored(f));
   std::size_t pending = mesh.face_count() - committed_;
-  if (pending > std::max<std::size_t>(4096, committed_ / 2)) rebuild(mesh);
+  if (pending > std::max<std::size_t>(4096, committed_ / 2) ||
+      (scene_ && mesh.records() != shared_records_))
+    rebuild(mesh);
 }
 
 bool CrossingIndex::test_exact(const Tri &t, uint32_t f, MeshState &mesh) {
@@ -300,8 +312,8 @@ bool CrossingIndex::crosses(const Tri &t, double pad, MeshState &mesh,
 
 std::size_t CrossingIndex::memory_bytes() const {
   std::size_t bytes = vertices_.capacity() * sizeof(float) + stamp_.capacity() * 4;
-  // Embree's BVH: roughly 64 bytes per committed triangle at medium quality.
-  bytes += std::size_t(committed_) * 64;
+  // Embree's BVH: about 36 bytes per committed triangle at medium quality, compact.
+  bytes += std::size_t(committed_) * 36;
   for (const auto &cell : grid_) bytes += 48 + cell.second.capacity() * 4;
   return bytes;
 }

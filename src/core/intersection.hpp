@@ -31,6 +31,10 @@ class CrossingIndex {
   // Registers face f (already added to mesh).
   void face_added(uint32_t f, MeshState &mesh);
 
+  // Frees the Embree scene and the index's buffers once the mesh is complete; no query may
+  // follow.
+  void release();
+
   std::size_t rebuilds() const { return rebuilds_; }
   double milliseconds() const { return seconds_ * 1000.0; }
   std::size_t memory_bytes() const;
@@ -50,6 +54,7 @@ class CrossingIndex {
   void *device_ = nullptr;
   void *scene_ = nullptr;
   uint32_t committed_ = 0;  // faces [0, committed_) are in the scene
+  const FaceRecord *shared_records_ = nullptr;  // the mesh's faces as the scene reads them
   double cell_ = 0;
   std::unordered_map<uint64_t, std::vector<uint32_t>> grid_;
   std::vector<uint32_t> oversized_;  // pending faces spanning too many cells

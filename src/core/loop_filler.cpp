@@ -238,8 +238,10 @@ class LoopFiller {
   std::vector<uint32_t> loop_around(const std::vector<uint32_t> &old, const std::vector<Tri> &rim) {
     std::vector<uint32_t> faces;
     for (const Tri &t : rim)
-      for (uint32_t v : t)
-        faces.insert(faces.end(), g_.mesh.faces_at(v).begin(), g_.mesh.faces_at(v).end());
+      for (uint32_t v : t) {
+        const FacesAround around = g_.mesh.faces_at(v);
+        faces.insert(faces.end(), around.begin(), around.end());
+      }
     std::sort(faces.begin(), faces.end());
     faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
     out_.clear();
@@ -525,7 +527,7 @@ class LoopFiller {
     near_.clear();
     auto consider = [&](uint32_t c) {
       if (c == u || c == v || c == z) return;
-      if (other_loops && g_.mesh.component(g_.mesh.faces_at(c)[0]) == own) return;
+      if (other_loops && g_.mesh.component(g_.mesh.faces_at(c).front()) == own) return;
       near_.push_back(c);
     };
     if (pool.size() <= kMaxScannedPool) {
@@ -598,7 +600,8 @@ std::size_t open_pinched_vertices(GrowthState &g) {
   std::vector<uint32_t> faces, group;
   for (uint32_t v = 0; v < g.points.size(); ++v) {
     if (g.mesh.fan_count(v) < 2) continue;
-    faces = g.mesh.faces_at(v);
+    const FacesAround around = g.mesh.faces_at(v);
+    faces.assign(around.begin(), around.end());
     const std::size_t n = faces.size();
     group.resize(n);
     for (std::size_t i = 0; i < n; ++i) group[i] = uint32_t(i);

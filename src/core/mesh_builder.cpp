@@ -19,14 +19,14 @@ constexpr unsigned kSeedRanks = 6;
 // cloud at every step, and at a million points cache misses, not geometry, would set the pace.
 constexpr uint32_t kBlockBits = 13;
 
+// 24 bytes: the list holds about one segment per point at its longest.
 struct Segment {
-  uint32_t block;  // the block of the segment's lower endpoint
   double length;
-  uint32_t a, b;
+  uint32_t a, b;  // a < b; the segment's block is that of a
   uint32_t seed = kNone;  // for a seed segment: the point whose neighbour list it came from
-  unsigned rank = 0;      // and the neighbour's rank in that list
+  uint8_t rank = 0;       // and the neighbour's rank in that list
   bool operator>(const Segment &o) const {
-    if (block != o.block) return block > o.block;
+    if (a >> kBlockBits != o.a >> kBlockBits) return a >> kBlockBits > o.a >> kBlockBits;
     if (length != o.length) return length > o.length;
     if (a != o.a) return a > o.a;
     return b > o.b;
@@ -63,27 +63,24 @@ class Builder {
       list_.pop();
       if ((++steps & 4095) == 0)
         tick(from + (to - from) * std::min(1.0, double(g_.mesh.face_count()) / expected));
-      if (!process(s.a, s.b) && s.seed != kNone && s.rank + 1 < std::min(kSeedRanks, g_.nb.k))
-        push_seed(s.seed, s.rank + 1);
+      const unsigned next_rank = unsigned(s.rank) + 1;
+      if (!process(s.a, s.b) && s.seed != kNone && next_rank < std::min(kSeedRanks, g_.nb.k))
+        push_seed(s.seed, next_rank);
     }
   }
 
  private:
   void push(uint32_t a, uint32_t b) {
     if (a > b) std::swap(a, b);
-    list_.push({a >> kBlockBits, dist(g_.points.work[a], g_.points.work[b]), a, b});
+    list_.push({dist(g_.points.work[a], g_.points.work[b]), a, b});
   }
 
   void push_seed(uint32_t i, unsigned rank) {
     // A mutual nearest pair is listed twice, once for each point, so that each point moves on
     // to its own next neighbour if the pair finds no triangle.
     uint32_t j = g_.nb.of(i)[rank];
-    Segment s{std::min(i, j) >> kBlockBits,
-              dist(g_.points.work[i], g_.points.work[j]),
-              std::min(i, j),
-              std::max(i, j),
-              i,
-              rank};
+    Segment s{dist(g_.points.work[i], g_.points.work[j]), std::min(i, j), std::max(i, j), i,
+              uint8_t(rank)};
     list_.push(s);
   }
 

@@ -5,67 +5,17 @@
 
 namespace moa {
 
-// ---------------------------------------------------------------- EdgeMap
-
-EdgeMap::EdgeMap(std::size_t expected_edges) {
-  std::size_t cap = 1024;
-  while (cap * 7 < expected_edges * 10) cap *= 2;  // at most 70 % full
-  slots_.assign(cap, Slot{~0ULL, {kNone, kNone}});
-  shift_ = 64;
-  for (std::size_t c = cap; c > 1; c >>= 1) --shift_;
-}
-
-uint64_t EdgeMap::key_of(uint32_t u, uint32_t v) {
-  if (u > v) std::swap(u, v);
-  return (uint64_t(u) << 32) | v;
-}
-
-std::size_t EdgeMap::index_of(uint64_t key) const {
-  return std::size_t((key * 0x9E3779B97F4A7C15ULL) >> shift_);
-}
-
-const EdgeMap::Slot *EdgeMap::find(uint32_t u, uint32_t v) const {
-  uint64_t key = key_of(u, v);
-  std::size_t mask = slots_.size() - 1;
-  for (std::size_t i = index_of(key);; i = (i + 1) & mask) {
-    if (slots_[i].key == key) return &slots_[i];
-    if (slots_[i].key == ~0ULL) return nullptr;
-  }
-}
-
-EdgeMap::Slot &EdgeMap::insert(uint32_t u, uint32_t v) {
-  if ((used_ + 1) * 10 > slots_.size() * 7) grow();
-  uint64_t key = key_of(u, v);
-  std::size_t mask = slots_.size() - 1;
-  for (std::size_t i = index_of(key);; i = (i + 1) & mask) {
-    if (slots_[i].key == key) return slots_[i];
-    if (slots_[i].key == ~0ULL) {
-      ++used_;
-      slots_[i].key = key;
-      return slots_[i];
-    }
-  }
-}
-
-void EdgeMap::grow() {
-  std::vector<Slot> old;
-  old.swap(slots_);
-  slots_.assign(old.size() * 2, Slot{~0ULL, {kNone, kNone}});
-  --shift_;
-  std::size_t mask = slots_.size() - 1;
-  for (const Slot &s : old) {
-    if (s.key == ~0ULL) continue;
-    std::size_t i = index_of(s.key);
-    while (slots_[i].key != ~0ULL) i = (i + 1) & mask;
-    slots_[i] = s;
-  }
-}
-
-// ---------------------------------------------------------------- MeshState
-
-MeshState::MeshState(std::size_t vertex_count)
-    : edges_(vertex_count * 3), vertex_faces_(vertex_count), vertex_edges_(vertex_count, 0) {
-  faces_.reserve(vertex_count * 2);
+MeshState::MeshState(std::size_t vertex_count) : around_(vertex_count) {
+  // A closed surface has about two faces per vertex; the loop module adds and removes some.
+  // Reserved address space costs no memory until used, and a move of the faces costs a copy
+  // and a rebuild of the crossing index, which reads them in place.
+  const std::size_t expected_faces = vertex_count * 2 + vertex_count / 4 + 64;
+  faces_.reserve(expected_faces);
+  // The per-face vectors too: grown by doubling, each would leave its old copies as holes in
+  // the heap.
+  alive_.reserve(expected_faces);
+  parent_.reserve(expected_faces);
+  flip_.reserve(expected_faces);
 }
 
 uint32_t MeshState::find(uint32_t f, uint32_t &parity) {
@@ -91,20 +41,48 @@ uint32_t MeshState::find(uint32_t f, uint32_t &parity) {
 Tri MeshState::oriented(uint32_t f) {
   uint32_t parity;
   find(f, parity);
-  Tri t = faces_[f];
+  Tri t = faces_[f].corners;
   if (parity) std::swap(t[1], t[2]);
   return t;
 }
 
 int MeshState::edge_faces(uint32_t u, uint32_t v, uint32_t out[2]) const {
-  const EdgeMap::Slot *s = edges_.find(u, v);
-  if (!s) {
-    out[0] = out[1] = kNone;
-    return 0;
+  // Both lists are in the order the faces were added: walk the shorter one.
+  if (around_[v].count < around_[u].count) std::swap(u, v);
+  out[0] = out[1] = kNone;
+  int n = 0;
+  for (uint32_t f = around_[u].first; f != kNone && n < 2;) {
+    const FaceRecord &r = faces_[f];
+    if (r.corners[0] == v || r.corners[1] == v || r.corners[2] == v) out[n++] = f;
+    f = r.next_around(u);
   }
-  out[0] = s->face[0];
-  out[1] = s->face[1];
-  return (s->face[0] != kNone) + (s->face[1] != kNone);
+  return n;
+}
+
+void MeshState::link(uint32_t f, uint32_t v) {
+  VertexFaces &a = around_[v];
+  if (a.count == 0)
+    a.first = f;
+  else
+    faces_[a.last].next_slot(v) = f;
+  faces_[f].next_slot(v) = kNone;
+  a.last = f;
+  ++a.count;
+}
+
+void MeshState::unlink(uint32_t f, uint32_t v) {
+  VertexFaces &a = around_[v];
+  const uint32_t next = faces_[f].next_around(v);
+  uint32_t prev = kNone;
+  if (a.first == f) {
+    a.first = next;
+  } else {
+    prev = a.first;
+    while (faces_[prev].next_around(v) != f) prev = faces_[prev].next_around(v);
+    faces_[prev].next_slot(v) = next;
+  }
+  if (a.last == f) a.last = prev;
+  if (--a.count == 0) a.last = f;
 }
 
 static bool has_directed(const Tri &t, uint32_t u, uint32_t v) {
@@ -117,8 +95,8 @@ int MeshState::mismatch(const Tri &t, uint32_t g) const {
   // Stored orders only; the parities are folded in by the caller.
   for (int i = 0; i < 3; ++i) {
     uint32_t u = t[i], v = t[(i + 1) % 3];
-    if (has_directed(faces_[g], u, v)) return 1;  // same direction on the shared edge
-    if (has_directed(faces_[g], v, u)) return 0;
+    if (has_directed(faces_[g].corners, u, v)) return 1;  // same direction on the shared edge
+    if (has_directed(faces_[g].corners, v, u)) return 0;
   }
   return 0;
 }
@@ -128,8 +106,8 @@ bool MeshState::same_chain(uint32_t v, uint32_t w1, uint32_t w2) const {
   uint32_t fs[2];
   edge_faces(v, w1, fs);
   uint32_t f = fs[0], w = w1;
-  for (std::size_t steps = 0; steps <= vertex_faces_[v].size(); ++steps) {
-    const Tri &t = faces_[f];
+  for (std::size_t steps = 0; steps <= around_[v].count; ++steps) {
+    const Tri &t = faces_[f].corners;
     uint32_t next = kNone;
     for (uint32_t x : t)
       if (x != v && x != w) next = x;
@@ -169,7 +147,7 @@ TopologyVerdict MeshState::check(const Tri &t) {
     bool ea = edge_faces(v, a, fs) == 1, eb = edge_faces(v, b, fs) == 1;
     if (strict_fans_ && is_used(v) && !ea && !eb) return TopologyVerdict::VertexFan;
     if (ea && eb && same_chain(v, a, b)) {
-      uint32_t chains = vertex_edges_[v] - uint32_t(vertex_faces_[v].size());
+      uint32_t chains = around_[v].edges - around_[v].count;
       if (chains != 1) return TopologyVerdict::VertexFan;
     }
   }
@@ -177,58 +155,51 @@ TopologyVerdict MeshState::check(const Tri &t) {
 }
 
 uint32_t MeshState::add(const Tri &t) {
+  // The face already on each edge, looked up before t joins the lists.
+  uint32_t on_edge[3];
+  for (int i = 0; i < 3; ++i) {
+    uint32_t fs[2];
+    edge_faces(t[i], t[(i + 1) % 3], fs);
+    on_edge[i] = fs[0];
+  }
   uint32_t id = uint32_t(faces_.size());
-  faces_.push_back(t);
+  faces_.push_back({t, {kNone, kNone, kNone}});
   alive_.push_back(1);
   parent_.push_back(id);
   flip_.push_back(0);
   for (int i = 0; i < 3; ++i) {
-    uint32_t u = t[i], v = t[(i + 1) % 3];
-    EdgeMap::Slot &s = edges_.insert(u, v);
-    if (s.face[0] == kNone) {
-      s.face[0] = id;
-      ++vertex_edges_[u];
-      ++vertex_edges_[v];
-    } else {
-      uint32_t g = s.face[0];
-      s.face[1] = id;
-      // Join orientation classes so that t and g agree on uv.
-      uint32_t pt, pg;
-      uint32_t rt = find(id, pt), rg = find(g, pg);
-      if (rt != rg) {
-        uint8_t x = uint8_t(uint32_t(mismatch(t, g)) ^ pt ^ pg);
-        // Link the younger class under the older: path compression keeps chains short.
-        if (rt > rg) std::swap(rt, rg);
-        parent_[rg] = rt;
-        flip_[rg] = x;
-      }
+    uint32_t u = t[i], v = t[(i + 1) % 3], g = on_edge[i];
+    if (g == kNone) {
+      ++around_[u].edges;
+      ++around_[v].edges;
+      continue;
+    }
+    // Join orientation classes so that t and g agree on uv.
+    uint32_t pt, pg;
+    uint32_t rt = find(id, pt), rg = find(g, pg);
+    if (rt != rg) {
+      uint8_t x = uint8_t(uint32_t(mismatch(t, g)) ^ pt ^ pg);
+      // Link the younger class under the older: path compression keeps chains short.
+      if (rt > rg) std::swap(rt, rg);
+      parent_[rg] = rt;
+      flip_[rg] = x;
     }
   }
-  for (uint32_t v : t) vertex_faces_[v].push_back(id);
+  for (uint32_t v : t) link(id, v);
   return id;
 }
 
 void MeshState::remove(uint32_t f) {
   if (!alive_[f]) return;
   alive_[f] = 0;
-  const Tri &t = faces_[f];
+  const Tri t = faces_[f].corners;
+  for (uint32_t v : t) unlink(f, v);
   for (int i = 0; i < 3; ++i) {
-    uint32_t u = t[i], v = t[(i + 1) % 3];
-    EdgeMap::Slot &s = edges_.insert(u, v);
-    if (s.face[0] == f) {
-      s.face[0] = s.face[1];
-      s.face[1] = kNone;
-    } else if (s.face[1] == f) {
-      s.face[1] = kNone;
+    uint32_t u = t[i], v = t[(i + 1) % 3], fs[2];
+    if (edge_faces(u, v, fs) == 0) {
+      --around_[u].edges;
+      --around_[v].edges;
     }
-    if (s.face[0] == kNone) {
-      --vertex_edges_[u];
-      --vertex_edges_[v];
-    }
-  }
-  for (uint32_t v : t) {
-    auto &list = vertex_faces_[v];
-    list.erase(std::find(list.begin(), list.end(), f));
   }
 }
 
@@ -236,7 +207,7 @@ uint32_t MeshState::fan_closing_blocked(const Tri &t) const {
   for (int i = 0; i < 3; ++i) {
     uint32_t v = t[i], a = t[(i + 1) % 3], b = t[(i + 2) % 3], fs[2];
     if (fan_closed(v) || edge_faces(v, a, fs) != 1 || edge_faces(v, b, fs) != 1) continue;
-    if (same_chain(v, a, b) && vertex_edges_[v] - uint32_t(vertex_faces_[v].size()) != 1) return v;
+    if (same_chain(v, a, b) && around_[v].edges - around_[v].count != 1) return v;
   }
   return kNone;
 }
@@ -245,24 +216,22 @@ std::size_t MeshState::remove_other_fans(uint32_t v, uint32_t keep) {
   // Collect keep's fan by crossing the interior edges at v, then drop every other face at v.
   std::vector<uint32_t> fan{keep}, others;
   for (std::size_t k = 0; k < fan.size(); ++k)
-    for (uint32_t x : faces_[fan[k]]) {
+    for (uint32_t x : faces_[fan[k]].corners) {
       if (x == v) continue;
       uint32_t fs[2];
       if (edge_faces(v, x, fs) != 2) continue;
       for (uint32_t g : fs)
         if (std::find(fan.begin(), fan.end(), g) == fan.end()) fan.push_back(g);
     }
-  for (uint32_t f : vertex_faces_[v])
+  for (uint32_t f : faces_at(v))
     if (std::find(fan.begin(), fan.end(), f) == fan.end()) others.push_back(f);
   for (uint32_t f : others) remove(f);
   return others.size();
 }
 
 std::size_t MeshState::memory_bytes() const {
-  std::size_t bytes = faces_.capacity() * sizeof(Tri) + parent_.capacity() * 4 + flip_.capacity() +
-                      edges_.memory_bytes() + vertex_edges_.capacity() * 4;
-  for (const auto &v : vertex_faces_) bytes += sizeof(v) + v.capacity() * 4;
-  return bytes;
+  return faces_.capacity() * sizeof(FaceRecord) + alive_.capacity() + parent_.capacity() * 4 +
+         flip_.capacity() + around_.capacity() * sizeof(VertexFaces);
 }
 
 }  // namespace moa

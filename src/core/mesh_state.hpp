@@ -1,10 +1,13 @@
-// The growing mesh shared by Algorithm 1 and the loop module: faces, the edge-to-face map,
-// per-vertex fan bookkeeping and a parity union-find that keeps the orientation consistent
-// while separately seeded patches grow into each other (paper §3.3, Type 2 and Type 3).
+// The growing mesh shared by Algorithm 1 and the loop module: faces, the faces around each
+// vertex (which also tell the faces on an edge), per-vertex fan bookkeeping and a parity
+// union-find that keeps the orientation consistent while separately seeded patches grow into
+// each other (paper §3.3, Type 2 and Type 3).
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <vector>
 
 namespace moa {
@@ -12,25 +15,60 @@ namespace moa {
 using Tri = std::array<uint32_t, 3>;
 constexpr uint32_t kNone = 0xffffffffu;
 
-// Open-addressing map from an undirected edge to its (at most two) faces.
-class EdgeMap {
+// A face and, per corner, the next face around that corner's vertex: the faces around each
+// vertex form a list threaded through the faces themselves, oldest first. 24 bytes per face
+// and 16 per vertex hold what a vector per vertex and an edge-to-face hash map held in about
+// 200 bytes per point.
+struct FaceRecord {
+  Tri corners;
+  uint32_t next[3];
+  int corner_of(uint32_t v) const { return corners[0] == v ? 0 : corners[1] == v ? 1 : 2; }
+  uint32_t next_around(uint32_t v) const { return next[corner_of(v)]; }
+  uint32_t &next_slot(uint32_t v) { return next[corner_of(v)]; }
+};
+
+// The faces around one vertex, oldest first (a forward range over face indices).
+class FacesAround {
  public:
-  struct Slot {
-    uint64_t key;
-    uint32_t face[2];
+  class iterator {
+   public:
+    using iterator_category = std::forward_iterator_tag;
+    using value_type = uint32_t;
+    using difference_type = std::ptrdiff_t;
+    using pointer = const uint32_t *;
+    using reference = uint32_t;
+    iterator(const FaceRecord *faces, uint32_t v, uint32_t f) : faces_(faces), v_(v), f_(f) {}
+    uint32_t operator*() const { return f_; }
+    iterator &operator++() {
+      f_ = faces_[f_].next_around(v_);
+      return *this;
+    }
+    iterator operator++(int) {
+      iterator old = *this;
+      ++*this;
+      return old;
+    }
+    bool operator==(const iterator &o) const { return f_ == o.f_; }
+    bool operator!=(const iterator &o) const { return f_ != o.f_; }
+
+   private:
+    const FaceRecord *faces_;
+    uint32_t v_, f_;
   };
-  explicit EdgeMap(std::size_t expected_edges);
-  const Slot *find(uint32_t u, uint32_t v) const;
-  Slot &insert(uint32_t u, uint32_t v);  // finds or creates
-  std::size_t memory_bytes() const { return slots_.size() * sizeof(Slot); }
+
+  FacesAround(const FaceRecord *faces, uint32_t v, uint32_t first, uint32_t count)
+      : faces_(faces), v_(v), first_(first), count_(count) {}
+  iterator begin() const { return {faces_, v_, count_ != 0 ? first_ : kNone}; }
+  iterator end() const { return {faces_, v_, kNone}; }
+  std::size_t size() const { return count_; }
+  bool empty() const { return count_ == 0; }
+  // The oldest face; at a vertex whose faces were all removed, the last one removed (the loop
+  // module's island test reads it, as it read the vacated first slot of the former vector).
+  uint32_t front() const { return first_; }
 
  private:
-  static uint64_t key_of(uint32_t u, uint32_t v);
-  std::size_t index_of(uint64_t key) const;
-  void grow();
-  std::vector<Slot> slots_;
-  std::size_t used_ = 0;
-  int shift_ = 0;
+  const FaceRecord *faces_;
+  uint32_t v_, first_, count_;
 };
 
 // Why a candidate triangle was refused by the mesh's own rules.
@@ -43,7 +81,9 @@ class MeshState {
   // Faces ever added, removed ones included; check alive() when iterating.
   std::size_t face_count() const { return faces_.size(); }
   bool alive(uint32_t f) const { return alive_[f] != 0; }
-  const Tri &stored(uint32_t f) const { return faces_[f]; }
+  const Tri &stored(uint32_t f) const { return faces_[f].corners; }
+  // Every face ever added, in order, for Embree to read in place. add() may move them.
+  const FaceRecord *records() const { return faces_.data(); }
   // The face as currently oriented (stored order, reversed when its component was flipped).
   Tri oriented(uint32_t f);
 
@@ -54,13 +94,16 @@ class MeshState {
     return find(f, parity);
   }
 
-  // Faces on edge uv: 0, 1 or 2 of them, written to out.
+  // Faces on edge uv: 0, 1 or 2 of them, oldest first, written to out.
   int edge_faces(uint32_t u, uint32_t v, uint32_t out[2]) const;
-  const std::vector<uint32_t> &faces_at(uint32_t v) const { return vertex_faces_[v]; }
-  bool fan_closed(uint32_t v) const {
-    return !vertex_faces_[v].empty() && vertex_edges_[v] == vertex_faces_[v].size();
+  FacesAround faces_at(uint32_t v) const {
+    const VertexFaces &a = around_[v];
+    return {faces_.data(), v, a.count != 0 ? a.first : a.last, a.count};
   }
-  bool is_used(uint32_t v) const { return !vertex_faces_[v].empty(); }
+  bool fan_closed(uint32_t v) const {
+    return around_[v].count != 0 && around_[v].edges == around_[v].count;
+  }
+  bool is_used(uint32_t v) const { return around_[v].count != 0; }
 
   // Would oriented triangle t keep every edge at most two faces, every vertex one fan
   // (or separate open fans that may still join) and the surface orientable?
@@ -76,8 +119,8 @@ class MeshState {
   std::size_t remove_other_fans(uint32_t v, uint32_t keep);
   // Separate fans around v (0 for an unused vertex, 1 for a disk or a half-disk).
   uint32_t fan_count(uint32_t v) const {
-    if (vertex_faces_[v].empty()) return 0;
-    return fan_closed(v) ? 1 : vertex_edges_[v] - uint32_t(vertex_faces_[v].size());
+    if (around_[v].count == 0) return 0;
+    return fan_closed(v) ? 1 : around_[v].edges - around_[v].count;
   }
 
   std::size_t memory_bytes() const;
@@ -90,13 +133,20 @@ class MeshState {
   // Orientation of t relative to face g across their shared edge uv: 0 consistent, 1 not.
   int mismatch(const Tri &t, uint32_t g) const;
 
-  std::vector<Tri> faces_;
+  // Per vertex: the ends of its list of faces, their number, and the number of edges at the
+  // vertex that have at least one face (a closed fan has as many edges as faces). Once the
+  // list is empty, `last` keeps the face removed last (FacesAround::front).
+  struct VertexFaces {
+    uint32_t first = kNone, last = kNone, count = 0, edges = 0;
+  };
+  void link(uint32_t f, uint32_t v);
+  void unlink(uint32_t f, uint32_t v);
+
+  std::vector<FaceRecord> faces_;
   std::vector<uint8_t> alive_;
   std::vector<uint32_t> parent_;
   std::vector<uint8_t> flip_;  // parity to parent
-  EdgeMap edges_;
-  std::vector<std::vector<uint32_t>> vertex_faces_;
-  std::vector<uint32_t> vertex_edges_;  // edges at the vertex with at least one face
+  std::vector<VertexFaces> around_;
   bool strict_fans_ = false;
 };
 

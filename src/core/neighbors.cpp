@@ -1,6 +1,6 @@
 // Stage 2: neighbours. A nanoflann kd-tree over the Morton-ordered points answers the k-NN
-// queries in parallel blocks; each point also gets its spacing and a PCA plane, which the
-// topology judgment uses as the local reference plane for segments that have no triangle yet.
+// queries in parallel blocks; each point also gets its spacing. The PCA plane of a point and its
+// neighbours is the topology judgment's local reference plane.
 #include "core/neighbors.hpp"
 
 #include <tbb/parallel_for.h>
@@ -26,7 +26,6 @@ Neighborhood compute_neighbors(const KdIndex &index, unsigned k,
   nb.k = unsigned(std::min<std::size_t>(k, n - 1));
   nb.knn.resize(n * nb.k);
   nb.spacing.resize(n);
-  nb.normal.resize(n);
 
   const unsigned want = nb.k + 1;  // the point itself comes back too
   const std::size_t block = 16384;
@@ -55,12 +54,15 @@ Neighborhood compute_neighbors(const KdIndex &index, unsigned k,
                             if (j < ns) sum += std::sqrt(tmp[j].first);
                           }
                           nb.spacing[i] = float(sum / std::max(1u, ns));
-                          nb.normal[i] = pca_frame(p, uint32_t(i), out, m).axis[0];
                         }
                       });
     tick(double(end) / double(n));
   }
   return nb;
+}
+
+Vec3 plane_normal(const PointSet &points, const Neighborhood &nb, uint32_t i) {
+  return pca_frame(points.work, i, nb.of(i), nb.k).axis[0];
 }
 
 }  // namespace moa

@@ -1,5 +1,5 @@
 // Stage 2 (DESIGN.md §2.2; paper §3.5.1 steps 1-2): k nearest neighbours of every point, the
-// local point spacing and the local reference plane (PCA normal).
+// local point spacing and, on demand, the local reference plane (PCA normal).
 #pragma once
 
 #include <cstdint>
@@ -16,7 +16,6 @@ struct Neighborhood {
   unsigned k = 0;
   std::vector<uint32_t> knn;   // k per point, nearest first, the point itself excluded
   std::vector<float> spacing;  // mean distance to the nearest few neighbours (work units)
-  std::vector<Vec3> normal;    // unit normal of the least-squares plane, unoriented
 
   const uint32_t *of(uint32_t i) const { return knn.data() + std::size_t(i) * k; }
 };
@@ -26,5 +25,9 @@ struct Neighborhood {
 
 Neighborhood compute_neighbors(const KdIndex &index, unsigned k,
                                const std::function<void(double)> &tick);
+
+// Unit normal of the least-squares plane through point i and its k neighbours, unoriented.
+// Computed when asked (the judgment caches it) rather than stored: 24 bytes per point.
+Vec3 plane_normal(const PointSet &points, const Neighborhood &nb, uint32_t i);
 
 }  // namespace moa

@@ -77,19 +77,21 @@ Result run_stages(const double *xyz, std::size_t count, const Params &params,
   report(MOA_STAGE_POINTS, 1.0);
   st.stage_ms[MOA_STAGE_POINTS] = ms_since(t);
 
-  t = Clock::now();
-  report(MOA_STAGE_NEIGHBORS, 0.0);
-  std::unique_ptr<KdIndex> index =
-      smooth_if_noisy(points, params, [&](double f) { report(MOA_STAGE_NEIGHBORS, 0.5 * f); });
-  Neighborhood nb = compute_neighbors(*index, unsigned(params.neighbors),
-                                      [&](double f) { report(MOA_STAGE_NEIGHBORS, 0.5 + 0.5 * f); });
-  index.reset();
-  st.stage_ms[MOA_STAGE_NEIGHBORS] = ms_since(t);
-
   std::vector<Tri> faces;
   {
-    // The growth structures (mesh bookkeeping, Embree scene) are freed before the finish
-    // stage allocates its own: the peak memory is the larger of the two, not their sum.
+    // The neighbourhoods and the growth structures (mesh bookkeeping, Embree scene) are freed
+    // before the finish stage allocates its own: the peak memory is the larger of the two, not
+    // their sum.
+    t = Clock::now();
+    report(MOA_STAGE_NEIGHBORS, 0.0);
+    std::unique_ptr<KdIndex> index =
+        smooth_if_noisy(points, params, [&](double f) { report(MOA_STAGE_NEIGHBORS, 0.5 * f); });
+    Neighborhood nb = compute_neighbors(*index, unsigned(params.neighbors), [&](double f) {
+      report(MOA_STAGE_NEIGHBORS, 0.5 + 0.5 * f);
+    });
+    index.reset();
+    st.stage_ms[MOA_STAGE_NEIGHBORS] = ms_since(t);
+
     GrowthState g(points, nb, params, 2.0 * median_spacing(nb), st);
 
     t = Clock::now();
@@ -102,9 +104,10 @@ Result run_stages(const double *xyz, std::size_t count, const Params &params,
     fill_loops(g, [&](double f) { report(MOA_STAGE_LOOPS, f); });
     st.stage_ms[MOA_STAGE_LOOPS] = ms_since(t);
 
-    faces = oriented_faces(g.mesh);
     st.embree_rebuilds = g.crossings.rebuilds();
     st.intersection_ms = g.crossings.milliseconds();
+    g.crossings.release();  // before the faces are copied out, so the copy reuses its memory
+    faces = oriented_faces(g.mesh);
   }
 
   t = Clock::now();

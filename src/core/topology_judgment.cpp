@@ -78,6 +78,9 @@ uint32_t third_vertex(const Tri &t, uint32_t u, uint32_t v) {
   return kNone;
 }
 
+// Local plane normals kept at once (TopologyJudge::normal_at).
+constexpr std::size_t kNormalCacheSlots = std::size_t(1) << 16;
+
 }  // namespace
 
 TopologyJudge::TopologyJudge(const PointSet &points, const Neighborhood &nb, const Params &params,
@@ -91,7 +94,11 @@ TopologyJudge::TopologyJudge(const PointSet &points, const Neighborhood &nb, con
       cos_edge_fold_(std::cos(degrees_to_radians(params.edge_fold_angle))),
       cos_vertex_fold_(std::cos(degrees_to_radians(params.vertex_fold_angle))),
       cos_vertex_open_(std::cos(degrees_to_radians(params.vertex_open_angle))),
-      cos_normal_(std::cos(degrees_to_radians(params.max_normal_deviation))) {}
+      cos_normal_(std::cos(degrees_to_radians(params.max_normal_deviation))) {
+  std::size_t slots = 1;  // a power of two, up to 2^16 (2 MB)
+  while (slots < points.size() && slots < kNormalCacheSlots) slots *= 2;
+  normals_.resize(slots);
+}
 
 bool TopologyJudge::is_sliver(const Tri &t) const {
   const Vec3 &a = points_.work[t[0]], &b = points_.work[t[1]], &c = points_.work[t[2]];
@@ -113,11 +120,17 @@ bool TopologyJudge::degenerate(const Tri &t, bool relaxed) const {
   return collinear(points_.exact[t[0]], points_.exact[t[1]], points_.exact[t[2]]);
 }
 
+const Vec3 &TopologyJudge::normal_at(uint32_t v) const {
+  CachedNormal &c = normals_[v & (normals_.size() - 1)];
+  if (c.point != v) c = {v, plane_normal(points_, nb_, v)};
+  return c.normal;
+}
+
 bool TopologyJudge::normal_deviates(const Tri &t) const {
   const Vec3 &a = points_.work[t[0]], &b = points_.work[t[1]], &c = points_.work[t[2]];
   Vec3 n = normalized(cross(b - a, c - a));
   for (uint32_t v : t)
-    if (std::fabs(dot(n, nb_.normal[v])) < cos_normal_) return true;
+    if (std::fabs(dot(n, normal_at(v))) < cos_normal_) return true;
   return false;
 }
 
