@@ -97,7 +97,7 @@ void CrossingIndex::release() {
   scene_ = nullptr;
   committed_ = 0;
   std::vector<float>().swap(vertices_);
-  std::vector<uint32_t>().swap(stamp_);
+  tested_.release();
   std::vector<uint32_t>().swap(found_);
   std::vector<uint32_t>().swap(oversized_);
   grid_ = {};
@@ -163,7 +163,6 @@ void CrossingIndex::rebuild(MeshState &mesh) {
 }
 
 void CrossingIndex::face_added(uint32_t f, MeshState &mesh) {
-  if (stamp_.size() <= f) stamp_.resize(std::size_t(f) * 2 + 64, 0);
   grid_insert(f, mesh.stored(f));
   std::size_t pending = mesh.face_count() - committed_;
   if (pending > std::max<std::size_t>(4096, committed_ / 2) ||
@@ -172,22 +171,16 @@ void CrossingIndex::face_added(uint32_t f, MeshState &mesh) {
 }
 
 bool CrossingIndex::test_exact(const Tri &t, uint32_t f, MeshState &mesh) {
-  if (stamp_[f] == query_ || !mesh.alive(f)) return false;
-  stamp_[f] = query_;
+  if (tested_.has(f) || !mesh.alive(f)) return false;
+  tested_.set(f);
   const Tri &g = mesh.stored(f);
-  const Vec3 tp[3] = {points_.exact[t[0]], points_.exact[t[1]], points_.exact[t[2]]};
-  const Vec3 gp[3] = {points_.exact[g[0]], points_.exact[g[1]], points_.exact[g[2]]};
+  const Vec3 tp[3] = {points_.exact(t[0]), points_.exact(t[1]), points_.exact(t[2])};
+  const Vec3 gp[3] = {points_.exact(g[0]), points_.exact(g[1]), points_.exact(g[2])};
   const unsigned ti[3] = {t[0], t[1], t[2]}, gi[3] = {g[0], g[1], g[2]};
   return triangles_cross(tp, ti, gp, gi);
 }
 
-void CrossingIndex::next_query(MeshState &mesh) {
-  if (stamp_.size() < mesh.face_count()) stamp_.resize(mesh.face_count() * 2 + 64, 0);
-  if (++query_ == 0) {
-    std::fill(stamp_.begin(), stamp_.end(), 0);
-    query_ = 1;
-  }
-}
+void CrossingIndex::next_query() { tested_.clear(); }
 
 template <class Visit>
 bool CrossingIndex::visit_near(const Vec3 &lo, const Vec3 &hi, MeshState &mesh, Visit &&visit) {
@@ -246,12 +239,12 @@ bool CrossingIndex::crosses(const Tri &t, double pad, MeshState &mesh,
     ~Timer() { acc += std::chrono::duration<double>(std::chrono::steady_clock::now() - s).count(); }
   } timer{start, seconds_};
 
-  next_query(mesh);
+  next_query();
   near.clear();
   // Faces sharing a vertex: the common case, decided exactly without any index.
   for (uint32_t v : t)
     for (uint32_t f : mesh.faces_at(v)) {
-      if (stamp_[f] != query_) near.push_back(f);
+      if (!tested_.has(f)) near.push_back(f);
       if (test_exact(t, f, mesh)) return true;
     }
 
@@ -281,7 +274,7 @@ bool CrossingIndex::crosses(const Tri &t, double pad, MeshState &mesh,
       rtcIntersect1(scene, &cc.base, &rh);
     }
     for (uint32_t f : found_) {
-      if (stamp_[f] != query_ && mesh.alive(f)) near.push_back(f);
+      if (!tested_.has(f) && mesh.alive(f)) near.push_back(f);
       if (test_exact(t, f, mesh)) return true;
     }
   }
@@ -294,16 +287,16 @@ bool CrossingIndex::crosses(const Tri &t, double pad, MeshState &mesh,
   bounds(t, lo, hi);
   const Vec3 p{pad, pad, pad}, plo = lo - p, phi = hi + p;
   return visit_near(plo, phi, mesh, [&](uint32_t f) {
-    if (stamp_[f] == query_ || !mesh.alive(f)) return false;
+    if (tested_.has(f) || !mesh.alive(f)) return false;
     Vec3 flo, fhi;
     bounds(mesh.stored(f), flo, fhi);
     if (!boxes_meet(flo, fhi, plo, phi)) {
-      stamp_[f] = query_;
+      tested_.set(f);
       return false;
     }
     near.push_back(f);
     if (!boxes_meet(flo, fhi, lo, hi)) {
-      stamp_[f] = query_;
+      tested_.set(f);
       return false;
     }
     return test_exact(t, f, mesh);
@@ -311,7 +304,7 @@ bool CrossingIndex::crosses(const Tri &t, double pad, MeshState &mesh,
 }
 
 std::size_t CrossingIndex::memory_bytes() const {
-  std::size_t bytes = vertices_.capacity() * sizeof(float) + stamp_.capacity() * 4;
+  std::size_t bytes = vertices_.capacity() * sizeof(float) + tested_.memory_bytes();
   // Embree's BVH: about 36 bytes per committed triangle at medium quality, compact.
   bytes += std::size_t(committed_) * 36;
   for (const auto &cell : grid_) bytes += 48 + cell.second.capacity() * 4;

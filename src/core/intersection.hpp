@@ -11,6 +11,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "core/marks.hpp"
 #include "core/mesh_state.hpp"
 #include "core/point_set.hpp"
 
@@ -44,7 +45,7 @@ class CrossingIndex {
   void grid_insert(uint32_t f, const Tri &t);
   bool test_exact(const Tri &t, uint32_t f, MeshState &mesh);
   void bounds(const Tri &t, Vec3 &lo, Vec3 &hi) const;
-  void next_query(MeshState &mesh);
+  void next_query();
   // Calls visit(face) for committed faces near the sphere and pending faces near the box.
   template <class Visit>
   bool visit_near(const Vec3 &lo, const Vec3 &hi, MeshState &mesh, Visit &&visit);
@@ -59,8 +60,7 @@ class CrossingIndex {
   std::unordered_map<uint64_t, std::vector<uint32_t>> grid_;
   std::vector<uint32_t> oversized_;  // pending faces spanning too many cells
   double scan_debt_ = 0;             // pending faces scanned one by one since the last build
-  std::vector<uint32_t> stamp_;      // per face: last query that tested it
-  uint32_t query_ = 0;
+  IndexMarks tested_;                // faces the current query has tested or ruled out
   std::vector<uint32_t> found_;
   std::size_t rebuilds_ = 0;
   double seconds_ = 0;

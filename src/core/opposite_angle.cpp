@@ -7,14 +7,11 @@ namespace moa {
 
 OppositeAngleSearch::OppositeAngleSearch(const PointSet &points, const Neighborhood &nb,
                                          const Params &params)
-    : points_(points), nb_(nb), radius_factor_(params.sphere_radius), mark_(points.size(), 0) {}
+    : points_(points), nb_(nb), radius_factor_(params.sphere_radius) {}
 
 void OppositeAngleSearch::sphere_points(uint32_t a, uint32_t b, std::vector<uint32_t> &out) {
   out.clear();
-  if (++stamp_ == 0) {
-    std::fill(mark_.begin(), mark_.end(), 0);
-    stamp_ = 1;
-  }
+  listed_.clear();
   const Vec3 &A = points_.work[a], &B = points_.work[b];
   Vec3 m = midpoint(A, B);
   double spacing = 0.5 * (double(nb_.spacing[a]) + double(nb_.spacing[b]));
@@ -24,8 +21,8 @@ void OppositeAngleSearch::sphere_points(uint32_t a, uint32_t b, std::vector<uint
     const uint32_t *list = nb_.of(s);
     for (unsigned j = 0; j < nb_.k; ++j) {
       uint32_t p = list[j];
-      if (mark_[p] == stamp_) continue;
-      mark_[p] = stamp_;
+      if (listed_.has(p)) continue;
+      listed_.set(p);
       if (norm2(points_.work[p] - m) < r2) out.push_back(p);
     }
   }

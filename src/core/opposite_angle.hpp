@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/geometry.hpp"
+#include "core/marks.hpp"
 #include "core/neighbors.hpp"
 #include "core/parameters.hpp"
 #include "core/point_set.hpp"
@@ -33,8 +34,7 @@ class OppositeAngleSearch {
   const PointSet &points_;
   const Neighborhood &nb_;
   double radius_factor_;
-  std::vector<uint32_t> mark_;
-  uint32_t stamp_ = 0;
+  IndexMarks listed_;  // points already looked at for the current segment
 };
 
 }  // namespace moa

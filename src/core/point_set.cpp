@@ -41,11 +41,11 @@ void check_finite(const double *xyz, std::size_t count) {
   }
 }
 
-void check_not_collinear(const std::vector<Vec3> &p) {
-  std::size_t b = 1;
-  // p holds distinct points, so p[0] and p[1] define a line.
-  for (std::size_t c = 2; c < p.size(); ++c)
-    if (!collinear(p[0], p[b], p[c])) return;
+void check_not_collinear(const PointSet &p) {
+  // The points are distinct, so the first two define a line.
+  const Vec3 a = p.exact(0), b = p.exact(1);
+  for (uint32_t c = 2; c < p.size(); ++c)
+    if (!collinear(a, b, p.exact(c))) return;
   throw Error(MOA_ERROR_INVALID_INPUT, "all points are collinear: no surface passes through them");
 }
 
@@ -118,16 +118,16 @@ PointSet prepare_points(const double *xyz, std::size_t count) {
   // exact and keeps every sign, so bring such clouds to an extent near 1.
   const int shift = (extent < 0x1p-100 || extent > 0x1p100) ? -std::ilogb(extent) : 0;
 
-  ps.exact.resize(keyed.size());
+  ps.input = xyz;
+  ps.shift = shift;
   ps.work.resize(keyed.size());
   ps.original.resize(keyed.size());
   for (std::size_t k = 0; k < keyed.size(); ++k) {
     Vec3 p = at(keyed[k].second);
-    ps.exact[k] = {std::ldexp(p.x, shift), std::ldexp(p.y, shift), std::ldexp(p.z, shift)};
     ps.work[k] = (p - center) * (1.0 / diag);
     ps.original[k] = keyed[k].second;
   }
-  check_not_collinear(ps.exact);
+  check_not_collinear(ps);
   return ps;
 }
 

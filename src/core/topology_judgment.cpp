@@ -117,7 +117,7 @@ bool TopologyJudge::degenerate(const Tri &t, bool relaxed) const {
   };
   if (corner_cos(a, b, c) < limit || corner_cos(b, c, a) < limit || corner_cos(c, a, b) < limit)
     return true;
-  return collinear(points_.exact[t[0]], points_.exact[t[1]], points_.exact[t[2]]);
+  return collinear(points_.exact(t[0]), points_.exact(t[1]), points_.exact(t[2]));
 }
 
 const Vec3 &TopologyJudge::normal_at(uint32_t v) const {
