@@ -78,41 +78,50 @@ void orient_outward(const PointSet &points, std::vector<Tri> &tris,
     while (comp[x] != x) x = comp[x] = comp[comp[x]];
     return x;
   };
-  Incidence inc(points.size(), tris, alive);
-  for (uint32_t f = 0; f < nf; ++f) {
-    if (!alive[f]) continue;
-    for (int i = 0; i < 3; ++i) {
-      uint32_t u = tris[f][i], w = tris[f][(i + 1) % 3];
-      for (uint32_t k = inc.start[u]; k < inc.start[u + 1]; ++k) {
-        uint32_t h = inc.faces[k];
-        if (h == f) continue;
-        const Tri &t = tris[h];
-        if (t[0] == w || t[1] == w || t[2] == w) comp[root(f)] = root(h);
+  {
+    Incidence inc(points.size(), tris, alive);
+    for (uint32_t f = 0; f < nf; ++f) {
+      if (!alive[f]) continue;
+      for (int i = 0; i < 3; ++i) {
+        uint32_t u = tris[f][i], w = tris[f][(i + 1) % 3];
+        for (uint32_t k = inc.start[u]; k < inc.start[u + 1]; ++k) {
+          uint32_t h = inc.faces[k];
+          if (h == f) continue;
+          const Tri &t = tris[h];
+          if (t[0] == w || t[1] == w || t[2] == w) comp[root(f)] = root(h);
+        }
       }
     }
   }
+  // Number the components densely, in order of their root, so that the sums below take an
+  // entry per component rather than per face (at a million points, 70 MB less at the end).
+  std::vector<uint32_t> component(nf, kNone);
+  uint32_t components = 0;
+  for (uint32_t f = 0; f < nf; ++f)
+    if (alive[f] && root(f) == f) component[f] = components++;
+  for (uint32_t f = 0; f < nf; ++f)
+    if (alive[f]) component[f] = component[root(f)];
   // Signed volume of each component, measured from the component's centre: the same as from
   // any point for a closed component; for an open one (a scan with a border, a surface with a
   // hole left open) it still tells the side that bulges out, so its normals face the same way.
-  std::vector<Vec3> centre(nf, Vec3{0, 0, 0});
-  std::vector<uint32_t> corners(nf, 0);
+  const std::vector<Vec3> &placed = points.placed();
+  std::vector<Vec3> centre(components, Vec3{0, 0, 0});
+  std::vector<uint32_t> corners(components, 0);
   for (uint32_t f = 0; f < nf; ++f) {
     if (!alive[f]) continue;
-    for (int i = 0; i < 3; ++i) centre[root(f)] = centre[root(f)] + points.placed()[tris[f][i]];
-    corners[root(f)] += 3;
+    for (int i = 0; i < 3; ++i) centre[component[f]] = centre[component[f]] + placed[tris[f][i]];
+    corners[component[f]] += 3;
   }
-  for (uint32_t f = 0; f < nf; ++f)
-    if (corners[f]) centre[f] = centre[f] * (1.0 / corners[f]);
-  std::vector<double> volume(nf, 0.0);
+  for (uint32_t c = 0; c < components; ++c) centre[c] = centre[c] * (1.0 / corners[c]);
+  std::vector<double> volume(components, 0.0);
   for (uint32_t f = 0; f < nf; ++f) {
     if (!alive[f]) continue;
-    const Vec3 &o = centre[root(f)];
-    const Vec3 a = points.placed()[tris[f][0]] - o, b = points.placed()[tris[f][1]] - o,
-               c = points.placed()[tris[f][2]] - o;
-    volume[root(f)] += dot(a, cross(b, c));
+    const Vec3 &o = centre[component[f]];
+    const Vec3 a = placed[tris[f][0]] - o, b = placed[tris[f][1]] - o, c = placed[tris[f][2]] - o;
+    volume[component[f]] += dot(a, cross(b, c));
   }
   for (uint32_t f = 0; f < nf; ++f)
-    if (alive[f] && volume[root(f)] < 0) std::swap(tris[f][1], tris[f][2]);
+    if (alive[f] && volume[component[f]] < 0) std::swap(tris[f][1], tris[f][2]);
 }
 
 std::size_t count_boundary_edges(const std::vector<Tri> &tris) {
