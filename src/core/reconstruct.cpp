@@ -10,6 +10,10 @@
 #include <cmath>
 #include <memory>
 
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
+
 #include "core/finish.hpp"
 #include "core/growth_state.hpp"
 #include "core/neighbors.hpp"
@@ -28,6 +32,15 @@ double ms_since(Clock::time_point t) {
 constexpr int kMaxSmoothingPasses = 3;
 // Neighbourhood of a pass forced on a cloud that does not look noisy.
 constexpr unsigned kForcedSmoothingK = 40;
+
+// Algorithm 1's Embree rebuilds free tens of megabytes in pieces that glibc keeps resident;
+// handing them back before the loop module's own rebuild keeps the run's peak at the mesh
+// stage's (at a million points 15 MB lower).
+void return_free_memory() {
+#ifdef __GLIBC__
+  malloc_trim(0);
+#endif
+}
 
 // Median point spacing: the cell size of the crossing index's grid of recent faces.
 double median_spacing(const Neighborhood &nb) {
@@ -97,6 +110,7 @@ Result run_stages(const double *xyz, std::size_t count, const Params &params,
     t = Clock::now();
     report(MOA_STAGE_MESH, 0.0);
     build_mesh(g, [&](double f) { report(MOA_STAGE_MESH, f); });
+    return_free_memory();
     st.stage_ms[MOA_STAGE_MESH] = ms_since(t);
 
     t = Clock::now();
