@@ -527,7 +527,11 @@ class LoopFiller {
     near_.clear();
     auto consider = [&](uint32_t c) {
       if (c == u || c == v || c == z) return;
-      if (other_loops && g_.mesh.component(g_.mesh.faces_at(c).front()) == own) return;
+      if (other_loops) {
+        // A vertex of another loop that has lost its faces belongs to no component: free.
+        const FacesAround around = g_.mesh.faces_at(c);
+        if (!around.empty() && g_.mesh.component(around.front()) == own) return;
+      }
       near_.push_back(c);
     };
     if (pool.size() <= kMaxScannedPool) {

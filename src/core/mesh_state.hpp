@@ -62,8 +62,7 @@ class FacesAround {
   iterator end() const { return {faces_, v_, kNone}; }
   std::size_t size() const { return count_; }
   bool empty() const { return count_ == 0; }
-  // The oldest face; at a vertex whose faces were all removed, the last one removed (the loop
-  // module's island test reads it, as it read the vacated first slot of the former vector).
+  // The oldest face; only for a vertex that has faces.
   uint32_t front() const { return first_; }
 
  private:
