@@ -54,7 +54,7 @@ class CrossingIndex {
   std::vector<float> vertices_;  // work coordinates, Embree's shared vertex buffer
   void *device_ = nullptr;
   void *scene_ = nullptr;
-  uint32_t committed_ = 0;  // faces [0, committed_) are in the scene
+  uint32_t committed_ = 0;                      // faces [0, committed_) are in the scene
   const FaceRecord *shared_records_ = nullptr;  // the mesh's faces as the scene reads them
   double cell_ = 0;
   std::unordered_map<uint64_t, std::vector<uint32_t>> grid_;

@@ -3,10 +3,9 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <nanoflann.hpp>
 #include <utility>
 #include <vector>
-
-#include <nanoflann.hpp>
 
 #include "core/geometry.hpp"
 
@@ -45,7 +44,8 @@ class KdIndex {
   // The k nearest points to q by (distance, index), for large k: nanoflann's k-NN search keeps
   // its results in a sorted array (cost k^2), a ball search costs about k. The ball is sized
   // from the nearest few and grown until it holds k points.
-  void nearest_many(const Vec3 &q, std::size_t k, std::vector<std::pair<uint32_t, double>> &out) const {
+  void nearest_many(const Vec3 &q, std::size_t k,
+                    std::vector<std::pair<uint32_t, double>> &out) const {
     constexpr std::size_t kProbe = 16;
     uint32_t idx[kProbe];
     double d2[kProbe];

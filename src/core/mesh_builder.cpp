@@ -22,7 +22,7 @@ constexpr uint32_t kBlockBits = 13;
 // 24 bytes: the list holds about one segment per point at its longest.
 struct Segment {
   double length;
-  uint32_t a, b;  // a < b; the segment's block is that of a
+  uint32_t a, b;          // a < b; the segment's block is that of a
   uint32_t seed = kNone;  // for a seed segment: the point whose neighbour list it came from
   uint8_t rank = 0;       // and the neighbour's rank in that list
   uint32_t block() const { return a >> kBlockBits; }

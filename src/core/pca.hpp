@@ -11,8 +11,8 @@ namespace moa {
 
 struct PcaFrame {
   Vec3 centroid;
-  Vec3 axis[3];       // unit axes, smallest spread first: axis[0] is the plane's normal
-  double spread[3];   // eigenvalues of the scatter matrix (sums, not means), ascending
+  Vec3 axis[3];      // unit axes, smallest spread first: axis[0] is the plane's normal
+  double spread[3];  // eigenvalues of the scatter matrix (sums, not means), ascending
 };
 
 // The frame of point `self` and its k neighbours `nb`.

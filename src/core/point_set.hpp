@@ -16,7 +16,7 @@ struct PointSet {
   // coordinates (scaled by 2^shift, which is exact) rather than a copy, 24 bytes per point.
   const double *input = nullptr;
   int shift = 0;
-  std::vector<Vec3> work;          // centred and scaled to unit diagonal: the judgment's geometry
+  std::vector<Vec3> work;  // centred and scaled to unit diagonal: the judgment's geometry
   // The caller's points in work units when `work` holds a smoothed copy (noisy clouds, see
   // smoothing.hpp); empty otherwise.
   std::vector<Vec3> raw_work;

@@ -28,14 +28,14 @@ constexpr double kNoisyDrop = 0.8;
 // (a clean surface's own curvature gives 0.03-0.1 at 20 points).
 constexpr double kMinRoughness = 0.05;
 
+// Neighbours whose distances size the smoothing ball.
+constexpr unsigned kProbeNeighbors = 16;
+
 double median(std::vector<double> v) {
   if (v.empty()) return 0;
   std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
   return v[v.size() / 2];
 }
-
-// Neighbours whose distances size the smoothing ball.
-constexpr unsigned kProbeNeighbors = 16;
 
 // Thickness over width of a neighbourhood: the spread off the plane against the larger spread
 // in it, both as standard deviations.
@@ -148,7 +148,8 @@ std::vector<Vec3> smoothed_points(const KdIndex &index, unsigned k,
             others.clear();
             for (std::size_t j = 0; j < found.size(); j += stride)
               if (found[j].first != i) others.push_back(found[j].first);
-            out[i] = project_onto_quadric(work, uint32_t(i), others.data(), unsigned(others.size()));
+            out[i] =
+                project_onto_quadric(work, uint32_t(i), others.data(), unsigned(others.size()));
           }
         });
     tick(double(end) / double(n));

@@ -18,10 +18,10 @@
 namespace moa {
 
 struct NoiseEstimate {
-  bool noisy = false;          // the roughness shrinks as the neighbourhood grows
-  unsigned smoothing_k = 0;    // neighbourhood size at which the cloud looks flattest
-  double small_scale = 0;      // median thickness / width at 10 or 20 points, the rougher
-  double large_scale = 0;      // the same at smoothing_k points
+  bool noisy = false;        // the roughness shrinks as the neighbourhood grows
+  unsigned smoothing_k = 0;  // neighbourhood size at which the cloud looks flattest
+  double small_scale = 0;    // median thickness / width at 10 or 20 points, the rougher
+  double large_scale = 0;    // the same at smoothing_k points
 };
 
 // Looks at a fixed sample of points at several neighbourhood sizes. Thickness over width grows
@@ -29,8 +29,9 @@ struct NoiseEstimate {
 // is the same at every size while the width grows). Deterministic.
 NoiseEstimate estimate_noise(const KdIndex &index);
 
-// Each point moved onto the quadric fitted (least squares, in its PCA frame) to its k nearest
-// neighbours. Parallel over points; independent of the thread count.
+// Each point moved onto the quadric fitted (least squares, in its PCA frame) to the ball
+// around it that holds about k points of a surface. Parallel over points; independent of the
+// thread count.
 std::vector<Vec3> smoothed_points(const KdIndex &index, unsigned k,
                                   const std::function<void(double)> &tick);
 

@@ -7,7 +7,6 @@
 #include <cmath>
 #include <initializer_list>
 #include <tuple>
-#include <initializer_list>
 
 #include "core/growth_state.hpp"
 
