@@ -115,8 +115,26 @@ class LoopFiller {
     }
     std::sort(ring.begin(), ring.end());
     ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
-    for (uint32_t f : ring) g_.mesh.remove(f);
-    return ring.size();
+    // The main piece of the mesh (half its faces or more) is never widened away whole: when all
+    // its faces lie along its holes (three points, a tetrahedron's corners), nothing would be
+    // left to fill from. A small piece may go: a stray triangle in a hole blocks its filling.
+    std::unordered_map<uint32_t, std::size_t> on_ring, in_piece;
+    for (uint32_t f : ring) ++on_ring[g_.mesh.component(f)];
+    std::size_t faces = 0;
+    for (uint32_t f = 0; f < g_.mesh.face_count(); ++f)
+      if (g_.mesh.alive(f)) {
+        ++faces;
+        auto it = on_ring.find(g_.mesh.component(f));
+        if (it != on_ring.end()) ++in_piece[it->first];
+      }
+    std::size_t removed = 0;
+    for (uint32_t f : ring) {
+      const uint32_t piece = g_.mesh.component(f);
+      if (on_ring[piece] == in_piece[piece] && 2 * in_piece[piece] >= faces) continue;
+      g_.mesh.remove(f);
+      ++removed;
+    }
+    return removed;
   }
 
   void run(const std::function<void(double)> &tick) {

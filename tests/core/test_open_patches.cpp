@@ -42,8 +42,22 @@ const Case &saddle_case() {
   return c;
 }
 
+// The smallest inputs: three points are one triangle, the four corners of a tetrahedron its
+// closed surface. (The loop module once widened the only triangle's "hole" away.)
+const Case &three_points_case() {
+  static const Case c = make_case("three points", Points{0, 0, 0, 1, 0, 0, 0, 1, 0});
+  return c;
+}
+
+const Case &tetrahedron_case() {
+  static const Case c = make_case("tetrahedron corners", Points{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1});
+  return c;
+}
+
 }  // namespace
 
+MOA_CONTRACT_TESTS(three_points)
+MOA_CONTRACT_TESTS(tetrahedron)
 MOA_CONTRACT_TESTS(flat_grid)
 MOA_CONTRACT_TESTS(flat_grid_tenths)
 MOA_CONTRACT_TESTS(hemisphere)
@@ -53,6 +67,8 @@ static void test_flat_grid_disk(void **) { MOA_EXPECT(disk_failure(flat_grid_cas
 static void test_flat_grid_tenths_disk(void **) { MOA_EXPECT(disk_failure(flat_grid_tenths_case())); }
 static void test_hemisphere_disk(void **) { MOA_EXPECT(disk_failure(hemisphere_case())); }
 static void test_saddle_disk(void **) { MOA_EXPECT(disk_failure(saddle_case())); }
+static void test_three_points_disk(void **) { MOA_EXPECT(disk_failure(three_points_case())); }
+static void test_tetrahedron_closed(void **) { MOA_EXPECT(closed_failure(tetrahedron_case(), 0)); }
 
 int main(void) {
   const struct CMUnitTest tests[] = {
@@ -60,6 +76,8 @@ int main(void) {
       MOA_CONTRACT_ENTRIES(flat_grid_tenths), cmocka_unit_test(test_flat_grid_tenths_disk),
       MOA_CONTRACT_ENTRIES(hemisphere),       cmocka_unit_test(test_hemisphere_disk),
       MOA_CONTRACT_ENTRIES(saddle),           cmocka_unit_test(test_saddle_disk),
+      MOA_CONTRACT_ENTRIES(three_points),     cmocka_unit_test(test_three_points_disk),
+      MOA_CONTRACT_ENTRIES(tetrahedron),      cmocka_unit_test(test_tetrahedron_closed),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
