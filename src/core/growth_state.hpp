@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <vector>
 
 #include "core/intersection.hpp"
 #include "core/mesh_state.hpp"
@@ -29,6 +30,21 @@ struct GrowthState {
     uint32_t f = mesh.add(t);
     crossings.face_added(f, mesh);
     return f;
+  }
+
+  // Adds the triangles in order if each passes the relaxed judgment (the loop module's patches
+  // and splits), counting the verdicts; if one fails, takes back those added and returns false.
+  bool add_all_or_none(const std::vector<Tri> &tris) {
+    std::vector<uint32_t> added;
+    for (const Tri &t : tris) {
+      Verdict v = judge.judge(t, nullptr, 0, true);
+      TopologyJudge::count(v, stats);
+      if (v != Verdict::Accept) break;
+      added.push_back(add_face(t));
+    }
+    if (added.size() == tris.size()) return true;
+    for (uint32_t f : added) mesh.remove(f);
+    return false;
   }
 
   const PointSet &points;

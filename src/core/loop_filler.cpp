@@ -210,20 +210,9 @@ class LoopFiller {
       uint32_t fs[2];
       return g_.mesh.edge_faces(a, b, fs) > 0;
     });
-    if (tris.empty()) return false;
-    std::vector<uint32_t> added;
-    for (const Tri &t : tris) {
-      Verdict verdict = g_.judge.judge(t, nullptr, 0, true);
-      TopologyJudge::count(verdict, g_.stats);
-      if (verdict != Verdict::Accept) break;
-      added.push_back(g_.add_face(t));
-    }
-    if (added.size() == tris.size()) {
-      g_.stats.triangles_loops += added.size();
-      return true;
-    }
-    for (uint32_t f : added) g_.mesh.remove(f);
-    return false;
+    if (tris.empty() || !g_.add_all_or_none(tris)) return false;
+    g_.stats.triangles_loops += tris.size();
+    return true;
   }
 
   // Removes the faces on the loop's edges; returns them as they were oriented.

@@ -113,24 +113,16 @@ class PointTaker {
 
   // Removes `old` and adds `parts` when every part passes the judgment; otherwise puts the old
   // faces back (under new indices).
-  bool replace(std::initializer_list<uint32_t> old, std::initializer_list<Tri> parts) {
+  bool replace(std::initializer_list<uint32_t> old, const std::vector<Tri> &parts) {
     std::vector<Tri> kept;
     for (uint32_t f : old) {
       kept.push_back(g_.mesh.oriented(f));
       g_.mesh.remove(f);
     }
-    std::vector<uint32_t> added;
-    for (const Tri &t : parts) {
-      Verdict v = g_.judge.judge(t, nullptr, 0, true);
-      TopologyJudge::count(v, g_.stats);
-      if (v != Verdict::Accept) break;
-      added.push_back(g_.add_face(t));
-    }
-    if (added.size() == parts.size()) {
+    if (g_.add_all_or_none(parts)) {
       g_.stats.triangles_loops += parts.size() - old.size();
       return true;
     }
-    for (uint32_t f : added) g_.mesh.remove(f);
     for (const Tri &t : kept) g_.add_face(t);
     return false;
   }
