@@ -111,6 +111,8 @@ typedef struct moa_stats {
   double total_ms;            /* wall time of moa_run */
   unsigned threads;           /* worker threads used */
   size_t boundary_edges_before; /* boundary edges after Algorithm 1, before the loop module */
+  size_t smoothing_passes;    /* passes of the noisy-cloud smoothing; 0: the cloud did not look
+                                 noisy (or the parameter smoothing is 0) */
 } moa_stats;
 
 /* Version of the library actually loaded, as "MAJOR.MINOR.PATCH". Never NULL. */

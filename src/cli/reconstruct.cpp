@@ -170,6 +170,7 @@ void write_stats(const Options &o, const moa_ctx *ctx, const moa_stats &s, size_
   j.value("triangles_removed", s.triangles_removed);
   j.value("boundary_edges", s.boundary_edges);
   j.value("boundary_edges_before", s.boundary_edges_before);
+  j.value("smoothing_passes", s.smoothing_passes);
   j.value("boundary_loops_before", s.boundary_loops_before);
   j.value("boundary_loops_after", s.boundary_loops_after);
   j.value("candidates_tested", s.candidates_tested);

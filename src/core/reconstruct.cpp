@@ -29,6 +29,7 @@ double ms_since(Clock::time_point t) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
 }
 
+// Passes of the noisy-cloud smoothing at most (smooth_if_noisy).
 constexpr int kMaxSmoothingPasses = 3;
 // Neighbourhood of a pass forced on a cloud that does not look noisy.
 constexpr unsigned kForcedSmoothingK = 40;
@@ -54,7 +55,8 @@ double median_spacing(const Neighborhood &nb) {
 // smallest scale when the noise exceeds the spacing, so the cloud is looked at again after each.
 // Returns the tree over the final work coordinates, for the neighbour stage.
 std::unique_ptr<KdIndex> smooth_if_noisy(PointSet &points, const Params &params,
-                                         const std::function<void(double)> &tick) {
+                                         const std::function<void(double)> &tick,
+                                         moa_stats &stats) {
   auto index = std::make_unique<KdIndex>(points.work);
   if (params.smoothing == 0) return index;
   for (int pass = 0; pass < kMaxSmoothingPasses; ++pass) {
@@ -68,6 +70,7 @@ std::unique_ptr<KdIndex> smooth_if_noisy(PointSet &points, const Params &params,
     if (points.raw_work.empty()) points.raw_work = std::move(points.work);
     points.work = std::move(smooth);
     index = std::make_unique<KdIndex>(points.work);
+    ++stats.smoothing_passes;
   }
   return index;
 }
@@ -97,8 +100,8 @@ Result run_stages(const double *xyz, std::size_t count, const Params &params,
     // their sum.
     t = Clock::now();
     report(MOA_STAGE_NEIGHBORS, 0.0);
-    std::unique_ptr<KdIndex> index =
-        smooth_if_noisy(points, params, [&](double f) { report(MOA_STAGE_NEIGHBORS, 0.5 * f); });
+    std::unique_ptr<KdIndex> index = smooth_if_noisy(
+        points, params, [&](double f) { report(MOA_STAGE_NEIGHBORS, 0.5 * f); }, st);
     Neighborhood nb = compute_neighbors(*index, unsigned(params.neighbors), [&](double f) {
       report(MOA_STAGE_NEIGHBORS, 0.5 + 0.5 * f);
     });

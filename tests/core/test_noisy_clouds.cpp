@@ -129,6 +129,14 @@ void test_smoothing_thins_the_cloud(void **) {
                moa::dist(smooth[i], points.work[i]));
 }
 
+// The statistics say whether the cloud was smoothed.
+void test_smoothing_reported(void **) {
+  assert_true(rough_sphere_case().run.stats.smoothing_passes >= 1);
+  Run clean = run_reconstruct(sphere_random(3000, 1.0, 83), 2);
+  assert_true(clean.error.empty());
+  assert_int_equal(clean.stats.smoothing_passes, 0);
+}
+
 void test_rough_sphere_closed(void **) { MOA_EXPECT(closed_failure(rough_sphere_case(), 0)); }
 void test_rough_genus3_closed(void **) { MOA_EXPECT(closed_failure(rough_genus3_case(), 3)); }
 
@@ -163,6 +171,7 @@ int main(void) {
       cmocka_unit_test(test_clean_clouds_are_not_noisy),
       cmocka_unit_test(test_noisy_clouds_are_noisy),
       cmocka_unit_test(test_smoothing_thins_the_cloud),
+      cmocka_unit_test(test_smoothing_reported),
       cmocka_unit_test(test_rough_sphere_closed),
       cmocka_unit_test(test_rough_torus_closed),
       cmocka_unit_test(test_rough_genus3_closed),
