@@ -15,8 +15,10 @@ namespace {
 // Neighbourhood sizes the estimate compares; the first two are the "small" scale.
 constexpr unsigned kScales[] = {10, 20, 40, 80, 160, 320};
 constexpr int kSmallScales = 2;
-// Points sampled for the estimate: enough for stable medians, few enough to cost little.
+// Points sampled for the estimate: enough for stable medians, few enough to cost little; a
+// tenth of a small cloud (but at least kMinNoiseSamples), whose own reconstruction is quick.
 constexpr std::size_t kNoiseSamples = 2000;
+constexpr std::size_t kMinNoiseSamples = 500;
 // A neighbourhood of more than this fraction of the cloud measures the object's shape, not its
 // surface: on a small cloud it narrows again as it wraps around the whole object.
 constexpr std::size_t kMaxScaleFraction = 20;
@@ -86,7 +88,8 @@ NoiseEstimate estimate_noise(const KdIndex &index) {
   const std::size_t limit = n / kMaxScaleFraction;
   if (limit < kScales[kSmallScales]) return est;
   const unsigned largest = unsigned(std::min<std::size_t>(kScales[std::size(kScales) - 1], limit));
-  const std::size_t step = std::max<std::size_t>(1, n / kNoiseSamples);
+  const std::size_t wanted = std::clamp(n / 10, kMinNoiseSamples, kNoiseSamples);
+  const std::size_t step = std::max<std::size_t>(1, n / wanted);
   const std::size_t samples = (n + step - 1) / step;
   constexpr std::size_t kScaleCount = std::size(kScales);
   std::vector<double> ratios(samples * kScaleCount, -1.0);
