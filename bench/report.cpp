@@ -639,6 +639,22 @@ void details_section(std::ostream &md, const Report &rep) {
   md << "\n";
 }
 
+// Every input's rows under the main table's header and note.
+void all_results_section(std::ostream &md, const Report &rep) {
+  md << "## All results\n\n" << kMainHeader;
+  for (const Row &row : rep.rows) main_rows(md, rep, row);
+  md << kMainNote;
+}
+
+// The sections both documents end with: what was seen, skipped, run and measured, and on what.
+void closing_sections(std::ostream &md, const Report &rep) {
+  observations(md, rep);
+  skipped_section(md, rep);
+  methods_section(md, rep);
+  measured_section(md);
+  inputs_section(md, rep);
+}
+
 void write_file(const fs::path &path, const std::string &content) {
   if (path.has_parent_path()) fs::create_directories(path.parent_path());
   std::ofstream out(path);
@@ -671,17 +687,11 @@ int report_main(int argc, char **argv) {
   full << "Summary and plots: `BENCHMARKS.md` at the project root. Numbers per line: "
           "`results.tsv` beside this file.\n\n";
   targets_section(full, rep);
-  full << "## All results\n\n" << kMainHeader;
-  for (const Row &row : rep.rows) main_rows(full, rep, row);
-  full << kMainNote;
+  all_results_section(full, rep);
   details_section(full, rep);
   stages_section(full, rep);
   speedup_section(full, rep);
-  observations(full, rep);
-  skipped_section(full, rep);
-  methods_section(full, rep);
-  measured_section(full);
-  inputs_section(full, rep);
+  closing_sections(full, rep);
   write_file(results / "latest.md", full.str());
 
   if (benchmarks.empty()) return 0;
@@ -703,14 +713,8 @@ int report_main(int argc, char **argv) {
   md << kMainNote;
   targets_section(md, rep);
   plots_section(md, results, to_results);
-  md << "## All results\n\n" << kMainHeader;
-  for (const Row &row : rep.rows) main_rows(md, rep, row);
-  md << kMainNote;
-  observations(md, rep);
-  skipped_section(md, rep);
-  methods_section(md, rep);
-  measured_section(md);
-  inputs_section(md, rep);
+  all_results_section(md, rep);
+  closing_sections(md, rep);
   write_file(benchmarks, md.str());
   return 0;
 }
