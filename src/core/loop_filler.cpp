@@ -118,19 +118,15 @@ class LoopFiller {
     // The main piece of the mesh (half its faces or more) is never widened away whole: when all
     // its faces lie along its holes (three points, a tetrahedron's corners), nothing would be
     // left to fill from. A small piece may go: a stray triangle in a hole blocks its filling.
-    std::unordered_map<uint32_t, std::size_t> on_ring, in_piece;
+    std::unordered_map<uint32_t, std::size_t> on_ring;
     for (uint32_t f : ring) ++on_ring[g_.mesh.component(f)];
+    const std::unordered_map<uint32_t, std::size_t> in_piece = faces_per_component();
     std::size_t faces = 0;
-    for (uint32_t f = 0; f < g_.mesh.face_count(); ++f)
-      if (g_.mesh.alive(f)) {
-        ++faces;
-        auto it = on_ring.find(g_.mesh.component(f));
-        if (it != on_ring.end()) ++in_piece[it->first];
-      }
+    for (const auto &piece : in_piece) faces += piece.second;
     std::size_t removed = 0;
     for (uint32_t f : ring) {
       const uint32_t piece = g_.mesh.component(f);
-      if (on_ring[piece] == in_piece[piece] && 2 * in_piece[piece] >= faces) continue;
+      if (on_ring[piece] == in_piece.at(piece) && 2 * in_piece.at(piece) >= faces) continue;
       g_.mesh.remove(f);
       ++removed;
     }
@@ -154,6 +150,14 @@ class LoopFiller {
   }
 
  private:
+  // Live faces of each piece of the mesh (orientation component), by its representative.
+  std::unordered_map<uint32_t, std::size_t> faces_per_component() {
+    std::unordered_map<uint32_t, std::size_t> count;
+    for (uint32_t f = 0; f < g_.mesh.face_count(); ++f)
+      if (g_.mesh.alive(f)) ++count[g_.mesh.component(f)];
+    return count;
+  }
+
   bool still_open(const std::vector<uint32_t> &loop) const {
     const std::size_t n = loop.size();
     for (std::size_t j = 0; j < n; ++j) {
@@ -378,9 +382,7 @@ class LoopFiller {
   // surface's vertex count or more, however the scan is shaped.
   void classify_and_pool() {
     std::unordered_map<uint32_t, uint32_t> &loop_of_vertex = loop_of_vertex_;
-    std::unordered_map<uint32_t, std::size_t> faces_of_component;
-    for (uint32_t f = 0; f < g_.mesh.face_count(); ++f)
-      if (g_.mesh.alive(f)) ++faces_of_component[g_.mesh.component(f)];
+    std::unordered_map<uint32_t, std::size_t> faces_of_component = faces_per_component();
     for (uint32_t l = 0; l < loops_.size(); ++l) {
       Loop &loop = loops_[l];
       double spacing = 0;
