@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <queue>
 #include <unordered_map>
 #include <vector>
@@ -55,6 +56,8 @@ constexpr std::size_t kMaxPatchedLoop = 96;
 // rings removed in a run (each costs a pass over the mesh).
 constexpr int kMaxRings = 3;
 constexpr std::size_t kMaxWidenings = 256;
+// Largest open piece dropped when it lies on another (see drop_stray_pieces).
+constexpr std::size_t kMaxStrayFaces = 12;
 
 class LoopFiller {
  public:
@@ -129,6 +132,43 @@ class LoopFiller {
       if (on_ring[piece] == in_piece.at(piece) && 2 * in_piece.at(piece) >= faces) continue;
       g_.mesh.remove(f);
       ++removed;
+    }
+    return removed;
+  }
+
+  // A few open faces lying on another piece of the surface (a second layer a noisy patch grew,
+  // which no fill can join to the first) are taken away, so that their points are offered to
+  // the take-in like any other left-out point. A small piece away from other surfaces stays.
+  std::size_t drop_stray_pieces() {
+    const std::unordered_map<uint32_t, std::size_t> in_piece = faces_per_component();
+    std::map<uint32_t, std::vector<uint32_t>> small;
+    for (uint32_t f = 0; f < g_.mesh.face_count(); ++f)
+      if (g_.mesh.alive(f) && in_piece.at(g_.mesh.component(f)) <= kMaxStrayFaces)
+        small[g_.mesh.component(f)].push_back(f);
+    const auto &w = g_.points.work;
+    std::size_t removed = 0;
+    for (const auto &[piece, faces] : small) {
+      bool open = false, on_other = true;
+      for (uint32_t f : faces) {
+        const Tri &t = g_.mesh.stored(f);
+        for (int i = 0; i < 3; ++i) {
+          uint32_t fs[2];
+          open |= g_.mesh.edge_faces(t[i], t[(i + 1) % 3], fs) == 1;
+          // Some neighbour of the corner, within one local spacing, on another piece.
+          const uint32_t v = t[i];
+          const uint32_t *nb = g_.nb.of(v);
+          bool near = false;
+          for (unsigned j = 0; j < g_.nb.k && !near; ++j) {
+            const FacesAround around = g_.mesh.faces_at(nb[j]);
+            near = !around.empty() && g_.mesh.component(around.front()) != piece &&
+                   dist(w[v], w[nb[j]]) <= g_.nb.spacing[v];
+          }
+          on_other &= near;
+        }
+      }
+      if (!open || !on_other) continue;
+      for (uint32_t f : faces) g_.mesh.remove(f);
+      removed += faces.size();
     }
     return removed;
   }
@@ -658,7 +698,9 @@ void fill_loops(GrowthState &g, const std::function<void(double)> &tick) {
     g.stats.triangles_removed += removed;
     if (removed == 0) break;
   }
-  LoopFiller(g).patch_open_holes();
+  for (int i = 0; i < 3 && LoopFiller(g).patch_open_holes() > 0; ++i) {
+  }
+  g.stats.triangles_removed += LoopFiller(g).drop_stray_pieces();
   if (g.params.take_in_points != 0) take_in_points(g);
   g.stats.boundary_loops_after = LoopFiller(g).count_loops();
   tick(1.0);

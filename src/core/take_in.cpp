@@ -2,7 +2,8 @@
 // lies over a triangle of the finished surface becomes a vertex by splitting that triangle in
 // three, when the three new triangles pass the same judgment as every other. When no such split
 // passes (on a noisy cloud a point can stand well off its neighbours' triangles), splitting an
-// edge of a nearby triangle, and the two triangles on it in two each, is tried instead.
+// edge of a nearby triangle, and the two triangles on it in two each, is tried instead; then
+// a star: a few faces around the point replaced by the fan from the point to their rim.
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
@@ -20,6 +21,10 @@ constexpr double kMaxHeight = 1.0;
 // A face whose nearest barycentric coordinate for the point is below minus this is not near
 // enough for an edge split either.
 constexpr double kMaxOutside = 0.5;
+// The largest patch a star replaces, and how far (in local spacings) from the point the
+// centre of a face may lie for the patch to grow over it.
+constexpr std::size_t kMaxStarFaces = 8;
+constexpr double kStarReach = 2.5;
 
 // Barycentric coordinates of p's projection onto triangle abc; false for a flat triangle.
 bool barycentric(const Vec3 &a, const Vec3 &b, const Vec3 &c, const Vec3 &p, double (&l)[3]) {
@@ -108,12 +113,69 @@ class PointTaker {
         if (replace({f, across}, {Tri{u, p, w}, Tri{p, v, w}, Tri{v, p, x}, Tri{p, u, x}}))
           return true;
       }
+    for (const Host &host : hosts_)
+      if (take_by_star(p, host.corners)) return true;
+    return false;
+  }
+
+  // Grows a patch from the face with corners `seed`, one face at a time across its rim (the
+  // face nearest p whose third corner is not yet in the patch, so that every corner stays on
+  // the rim and the patch stays a disk), and after each step tries the fan from p to the rim
+  // in its place. Split faces are narrow or tilted where noise lifts p off its neighbours'
+  // triangles; a wider fan spreads the step over more, larger triangles.
+  bool take_by_star(uint32_t p, const Tri &seed) {
+    const auto &w = g_.points.work;
+    const double reach2 = std::pow(kStarReach * g_.nb.spacing[p], 2);
+    std::vector<Tri> patch{seed};  // by corners: a failed attempt re-adds faces anew
+    std::vector<uint32_t> faces, corners;
+    std::vector<Tri> fan;
+    while (patch.size() < kMaxStarFaces) {
+      faces.clear();
+      corners.clear();
+      for (const Tri &t : patch) {
+        const uint32_t f = face_of(t);
+        if (f == kNone) return false;
+        faces.push_back(f);
+        corners.insert(corners.end(), t.begin(), t.end());
+      }
+      // Rim edges as the patch's faces run along them, and the best face across one.
+      fan.clear();
+      uint32_t next = kNone;
+      double next_d2 = reach2;
+      for (uint32_t f : faces) {
+        const Tri o = g_.mesh.oriented(f);
+        for (int i = 0; i < 3; ++i) {
+          const uint32_t a = o[i], b = o[(i + 1) % 3];
+          uint32_t fs[2];
+          const int n = g_.mesh.edge_faces(a, b, fs);
+          const uint32_t across = n == 2 ? (fs[0] == f ? fs[1] : fs[0]) : kNone;
+          if (across != kNone && std::find(faces.begin(), faces.end(), across) != faces.end())
+            continue;  // inside the patch
+          fan.push_back(Tri{a, b, p});
+          if (across == kNone) continue;
+          const Tri &c = g_.mesh.stored(across);
+          bool opens = true;  // its third corner is new: the patch grows as a disk
+          for (uint32_t x : c)
+            if (x != a && x != b)
+              opens = std::find(corners.begin(), corners.end(), x) == corners.end();
+          const double d2 = norm2(centroid(w[c[0]], w[c[1]], w[c[2]]) - w[p]);
+          if (opens && (d2 < next_d2 || (d2 == next_d2 && across < next))) {
+            next = across;
+            next_d2 = d2;
+          }
+        }
+      }
+      // One and two faces are the splits tried before.
+      if (patch.size() > 2 && replace(faces, fan)) return true;
+      if (next == kNone) return false;
+      patch.push_back(g_.mesh.stored(next));
+    }
     return false;
   }
 
   // Removes `old` and adds `parts` when every part passes the judgment; otherwise puts the old
   // faces back (under new indices).
-  bool replace(std::initializer_list<uint32_t> old, const std::vector<Tri> &parts) {
+  bool replace(const std::vector<uint32_t> &old, const std::vector<Tri> &parts) {
     std::vector<Tri> kept;
     for (uint32_t f : old) {
       kept.push_back(g_.mesh.oriented(f));
