@@ -698,7 +698,11 @@ void fill_loops(GrowthState &g, const std::function<void(double)> &tick) {
     g.stats.triangles_removed += removed;
     if (removed == 0) break;
   }
-  for (int i = 0; i < 3 && LoopFiller(g).patch_open_holes() > 0; ++i) {
+  // Patching one hole can free its neighbour (the faces a widened hole gave up were what
+  // blocked the other): patch again while that closes holes. Then the stray layers go, and
+  // their points join the others left out.
+  constexpr int kPatchRounds = 3;
+  for (int round = 0; round < kPatchRounds && LoopFiller(g).patch_open_holes() > 0; ++round) {
   }
   g.stats.triangles_removed += LoopFiller(g).drop_stray_pieces();
   if (g.params.take_in_points != 0) take_in_points(g);

@@ -21,8 +21,9 @@ constexpr double kMaxHeight = 1.0;
 // A face whose nearest barycentric coordinate for the point is below minus this is not near
 // enough for an edge split either.
 constexpr double kMaxOutside = 0.5;
-// The largest patch a star replaces, and how far (in local spacings) from the point the
-// centre of a face may lie for the patch to grow over it.
+// A patch a star replaces has fewer than kMaxStarFaces faces (three to seven: one and two are
+// the splits) and grows only over faces whose centres lie within kStarReach local spacings of
+// the point.
 constexpr std::size_t kMaxStarFaces = 8;
 constexpr double kStarReach = 2.5;
 
