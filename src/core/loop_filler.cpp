@@ -325,13 +325,23 @@ class LoopFiller {
   // along it keeps the orientation.
   void collect_hole_edges() {
     out_.clear();
-    for (uint32_t f = 0; f < g_.mesh.face_count(); ++f) {
-      if (!g_.mesh.alive(f)) continue;
-      Tri t = g_.mesh.oriented(f);
-      for (int i = 0; i < 3; ++i) {
-        uint32_t a = t[i], b = t[(i + 1) % 3], fs[2];
-        if (g_.mesh.edge_faces(a, b, fs) == 1) out_[b].push_back(a);
+    // Only a vertex whose fan is open has a hole edge: the faces around those, each edge
+    // a -> b (as its face runs) found from a, recorded in face order as a scan of every face
+    // would (the order decides how loops are traced through a vertex on two of them).
+    std::vector<std::pair<uint32_t, int>> edges;  // (face, index of a in it)
+    for (uint32_t a = 0; a < g_.points.size(); ++a) {
+      if (!g_.mesh.is_used(a) || g_.mesh.fan_closed(a)) continue;
+      for (uint32_t f : g_.mesh.faces_at(a)) {
+        const Tri t = g_.mesh.oriented(f);
+        const int i = int(std::find(t.begin(), t.end(), a) - t.begin());
+        uint32_t fs[2];
+        if (g_.mesh.edge_faces(a, t[(i + 1) % 3], fs) == 1) edges.push_back({f, i});
       }
+    }
+    std::sort(edges.begin(), edges.end());
+    for (const auto &[f, i] : edges) {
+      const Tri t = g_.mesh.oriented(f);
+      out_[t[(i + 1) % 3]].push_back(t[i]);
     }
   }
 

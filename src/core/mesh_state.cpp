@@ -122,10 +122,10 @@ bool MeshState::same_chain(uint32_t v, uint32_t w1, uint32_t w2) const {
 TopologyVerdict MeshState::check(const Tri &t) {
   // Edges: at most two faces, and a consistent orientation with the face already there.
   uint32_t roots[3], need[3];
-  int adjacent = 0;
+  int adjacent = 0, faces_on[3];  // faces on edge t[i] t[i + 1]
   for (int i = 0; i < 3; ++i) {
     uint32_t fs[2];
-    int n = edge_faces(t[i], t[(i + 1) % 3], fs);
+    const int n = faces_on[i] = edge_faces(t[i], t[(i + 1) % 3], fs);
     if (n >= 2) return TopologyVerdict::EdgeFull;
     if (n == 1) {
       uint32_t parity;
@@ -143,8 +143,8 @@ TopologyVerdict MeshState::check(const Tri &t) {
   for (int i = 0; i < 3; ++i) {
     uint32_t v = t[i], a = t[(i + 1) % 3], b = t[(i + 2) % 3];
     if (fan_closed(v)) return TopologyVerdict::VertexFan;
-    uint32_t fs[2];
-    bool ea = edge_faces(v, a, fs) == 1, eb = edge_faces(v, b, fs) == 1;
+    // Edge v-a is edge i of t, edge b-v edge i + 2.
+    const bool ea = faces_on[i] == 1, eb = faces_on[(i + 2) % 3] == 1;
     if (strict_fans_ && is_used(v) && !ea && !eb) return TopologyVerdict::VertexFan;
     if (ea && eb && same_chain(v, a, b)) {
       uint32_t chains = around_[v].edges - around_[v].count;

@@ -134,15 +134,23 @@ bool TopologyJudge::normal_deviates(const Tri &t) const {
   return false;
 }
 
-bool TopologyJudge::edge_folds(const Tri &t) const {
+TopologyJudge::EdgeFaces TopologyJudge::faces_on_edges(const Tri &t) const {
+  EdgeFaces edges;
+  for (int i = 0; i < 3; ++i) {
+    uint32_t fs[2];
+    mesh_.edge_faces(t[i], t[(i + 1) % 3], fs);
+    edges.face[i] = fs[0];
+  }
+  return edges;
+}
+
+bool TopologyJudge::edge_folds(const Tri &t, const EdgeFaces &edges) const {
   // Fig. 8 (2): alpha is the angle between AB x BC and AB x BD; near 0 the two triangles lie
   // on the same side of AB, folded onto each other.
   for (int i = 0; i < 3; ++i) {
     uint32_t ia = t[i], ib = t[(i + 1) % 3];
-    uint32_t fs[2];
-    int n = mesh_.edge_faces(ia, ib, fs);
-    for (int k = 0; k < n; ++k) {
-      uint32_t id = third_vertex(mesh_.stored(fs[k]), ia, ib);
+    if (edges.face[i] != kNone) {
+      uint32_t id = third_vertex(mesh_.stored(edges.face[i]), ia, ib);
       const Vec3 &A = points_.work[ia], &B = points_.work[ib];
       const Vec3 &C = points_.work[t[(i + 2) % 3]], &D = points_.work[id];
       Vec3 ab = B - A;
@@ -153,7 +161,7 @@ bool TopologyJudge::edge_folds(const Tri &t) const {
   return false;
 }
 
-bool TopologyJudge::merges_across_a_bend(const Tri &t) {
+bool TopologyJudge::merges_across_a_bend(const Tri &t, const EdgeFaces &edges) {
   // A triangle that joins two pieces of the mesh decides how one piece is oriented relative to
   // the other, for good. Across a steep bend that decision is a guess: two fronts of a noisy
   // sample meeting at a step would turn a whole region inside out, and the seam where it meets
@@ -165,18 +173,16 @@ bool TopologyJudge::merges_across_a_bend(const Tri &t) {
   uint32_t first = kNone;
   bool joins = false;
   for (int i = 0; i < 3 && !joins; ++i) {
-    uint32_t fs[2];
-    if (mesh_.edge_faces(t[i], t[(i + 1) % 3], fs) != 1) continue;
-    const uint32_t c = mesh_.component(fs[0]);
+    if (edges.face[i] == kNone) continue;
+    const uint32_t c = mesh_.component(edges.face[i]);
     if (first == kNone) first = c;
     joins = c != first;
   }
   if (!joins) return false;
   for (int i = 0; i < 3; ++i) {
     const uint32_t a = t[i], b = t[(i + 1) % 3];
-    uint32_t fs[2];
-    if (mesh_.edge_faces(a, b, fs) != 1) continue;
-    const uint32_t d = third_vertex(mesh_.stored(fs[0]), a, b);
+    if (edges.face[i] == kNone) continue;
+    const uint32_t d = third_vertex(mesh_.stored(edges.face[i]), a, b);
     const Vec3 nd = normalized(cross(w[a] - w[b], w[d] - w[b]));
     if (dot(nt, nd) < kMinMergeBendCos) return true;
   }
@@ -211,15 +217,16 @@ bool TopologyJudge::vertex_folds(const Tri &t) const {
   return false;
 }
 
-TopologyJudge::Frame TopologyJudge::frame_of(const Tri &t) const {
+TopologyJudge::Frame TopologyJudge::frame_of(const Tri &t, const EdgeFaces &edges) const {
   Frame fr;
   for (int i = 0; i < 3; ++i) {
-    uint32_t u = t[i], v = t[(i + 1) % 3], fs[2];
-    if (mesh_.edge_faces(u, v, fs) != 1) continue;
-    Tri g = mesh_.oriented(fs[0]);
+    uint32_t u = t[i], v = t[(i + 1) % 3];
+    if (edges.face[i] == kNone) continue;
+    const uint32_t f = edges.face[i];
+    Tri g = mesh_.oriented(f);
     bool same_direction = false;  // t and g both run u->v: g's class is flipped relative to t
     for (int k = 0; k < 3; ++k) same_direction |= (g[k] == u && g[(k + 1) % 3] == v);
-    fr.roots[fr.linked] = mesh_.component(fs[0]);
+    fr.roots[fr.linked] = mesh_.component(f);
     fr.sign[fr.linked++] = same_direction ? -1.0 : 1.0;
   }
   return fr;
@@ -333,8 +340,9 @@ Verdict TopologyJudge::judge(const Tri &t, const uint32_t *sphere, std::size_t c
       return Verdict::Manifold;
   }
   if (!relaxed && normal_deviates(t)) return Verdict::Flatness;
-  if (edge_folds(t) || merges_across_a_bend(t)) return Verdict::EdgeFold;
-  Frame frame = frame_of(t);
+  const EdgeFaces edges = faces_on_edges(t);
+  if (edge_folds(t, edges) || merges_across_a_bend(t, edges)) return Verdict::EdgeFold;
+  Frame frame = frame_of(t, edges);
   if (!relaxed && (vertex_folds(t) || faces_backwards(t, frame))) return Verdict::VertexFold;
   if (!relaxed && count > 0 && flatness_fails(t, sphere, count)) return Verdict::Flatness;
   const auto &w = points_.work;

@@ -49,8 +49,14 @@ class TopologyJudge {
   bool degenerate(const Tri &t, bool relaxed) const;
   bool is_sliver(const Tri &t) const;
   bool normal_deviates(const Tri &t) const;
-  bool edge_folds(const Tri &t) const;
-  bool merges_across_a_bend(const Tri &t);
+  // The face on each edge t[i] t[i + 1] (kNone for none): once t has passed the manifold
+  // check there is at most one, and the tests below share one lookup.
+  struct EdgeFaces {
+    uint32_t face[3];
+  };
+  EdgeFaces faces_on_edges(const Tri &t) const;
+  bool edge_folds(const Tri &t, const EdgeFaces &edges) const;
+  bool merges_across_a_bend(const Tri &t, const EdgeFaces &edges);
   bool vertex_folds(const Tri &t) const;
   // The components t will be joined to through its edges, and whether each one's orientation
   // is flipped relative to t (sign -1) or not (+1).
@@ -64,7 +70,7 @@ class TopologyJudge {
       return 0;
     }
   };
-  Frame frame_of(const Tri &t) const;
+  Frame frame_of(const Tri &t, const EdgeFaces &edges) const;
   bool faces_backwards(const Tri &t, const Frame &frame) const;
   bool overlaps_layer(const Tri &t, const Frame &frame, const std::vector<uint32_t> &near) const;
   bool flatness_fails(const Tri &t, const uint32_t *sphere, std::size_t count) const;
