@@ -704,7 +704,9 @@ void fill_loops(GrowthState &g, const std::function<void(double)> &tick) {
     LoopFiller filler(g);
     filler.run([&](double f) { tick((round + f) / kRounds); });
     if (round + 1 == kRounds) break;
-    std::size_t removed = open_pinched_vertices(g) + filler.widen_open_holes();
+    // In this order, spelled out: the operands of + may be evaluated either way round.
+    std::size_t removed = open_pinched_vertices(g);
+    removed += filler.widen_open_holes();
     g.stats.triangles_removed += removed;
     if (removed == 0) break;
   }
