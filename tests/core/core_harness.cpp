@@ -68,9 +68,8 @@ void dump_if_asked(const Case &c) {
 
 }  // namespace
 
-Run run_reconstruct(const Points &points, unsigned threads) {
+Run run_reconstruct(const Points &points, unsigned threads, Params params) {
   Run run;
-  Params params;
   params.threads = threads;
   const auto start = std::chrono::steady_clock::now();
   try {
@@ -85,12 +84,14 @@ Run run_reconstruct(const Points &points, unsigned threads) {
   return run;
 }
 
-Case make_case(const std::string &name, Points points, std::size_t duplicates) {
+Case make_case(const std::string &name, Points points, std::size_t duplicates,
+               const Params &params) {
   Case c;
   c.name = name;
   c.points = std::move(points);
   c.duplicates = duplicates;
-  c.run = run_reconstruct(c.points, 2);
+  c.params = params;
+  c.run = run_reconstruct(c.points, 2, c.params);
   if (c.run.error.empty()) c.report = check_contract(c.points, c.run.triangles);
   print_message("%s\n", header(c).c_str());
   dump_if_asked(c);
@@ -132,11 +133,11 @@ std::string stats_failure(const Case &c) {
 
 std::string determinism_failure(const Case &c) {
   if (!c.run.error.empty()) return run_error(c);
-  const Run again = run_reconstruct(c.points, 2);
+  const Run again = run_reconstruct(c.points, 2, c.params);
   if (!again.error.empty()) return header(c) + ": second run threw: " + again.error;
   if (again.triangles != c.run.triangles)
     return header(c) + ": two runs with 2 threads differ: " + first_difference(c.run, again);
-  const Run single = run_reconstruct(c.points, 1);
+  const Run single = run_reconstruct(c.points, 1, c.params);
   if (!single.error.empty()) return header(c) + ": run with 1 thread threw: " + single.error;
   if (single.triangles != c.run.triangles)
     return header(c) + ": 2 threads and 1 thread differ: " + first_difference(c.run, single);

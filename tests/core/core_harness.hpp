@@ -20,18 +20,20 @@ struct Run {
   double seconds = 0;
 };
 
-// Default parameters except the thread count.
-Run run_reconstruct(const Points &points, unsigned threads);
+// The given parameters (the defaults unless a test asks otherwise) with this thread count.
+Run run_reconstruct(const Points &points, unsigned threads, Params params = Params());
 
 // One input and its first run (2 threads), checked once.
 struct Case {
   std::string name;
   Points points;
   std::size_t duplicates = 0;  // exact duplicate points planted in the input
+  Params params;               // every run of the case uses them
   Run run;
   ContractReport report;
 };
-Case make_case(const std::string &name, Points points, std::size_t duplicates = 0);
+Case make_case(const std::string &name, Points points, std::size_t duplicates = 0,
+               const Params &params = Params());
 
 // Each returns "" when the property holds, else a message for the failure report.
 std::string contract_failure(const Case &c);         // C1-C5
