@@ -70,8 +70,10 @@ std::size_t enforce_single_fans(std::size_t nv, const std::vector<Tri> &tris,
 }
 
 // Turns every component so that its signed volume is positive: closed ones face outward.
-void orient_outward(const PointSet &points, std::vector<Tri> &tris,
-                    const std::vector<char> &alive) {
+// Returns the number of boundary edges, which the walk joining faces across their edges meets
+// on the way (an edge no other face shares).
+std::size_t orient_outward(const PointSet &points, std::vector<Tri> &tris,
+                           const std::vector<char> &alive) {
   const std::size_t nf = tris.size();
   std::vector<uint32_t> comp(nf);
   std::iota(comp.begin(), comp.end(), 0u);
@@ -79,18 +81,24 @@ void orient_outward(const PointSet &points, std::vector<Tri> &tris,
     while (comp[x] != x) x = comp[x] = comp[comp[x]];
     return x;
   };
+  std::size_t boundary = 0;
   {
     Incidence inc(points.size(), tris, alive);
     for (uint32_t f = 0; f < nf; ++f) {
       if (!alive[f]) continue;
       for (int i = 0; i < 3; ++i) {
         uint32_t u = tris[f][i], w = tris[f][(i + 1) % 3];
+        bool shared = false;
         for (uint32_t k = inc.start[u]; k < inc.start[u + 1]; ++k) {
           uint32_t h = inc.faces[k];
           if (h == f) continue;
           const Tri &t = tris[h];
-          if (t[0] == w || t[1] == w || t[2] == w) comp[root(f)] = root(h);
+          if (t[0] == w || t[1] == w || t[2] == w) {
+            comp[root(f)] = root(h);
+            shared = true;
+          }
         }
+        boundary += !shared;
       }
     }
   }
@@ -123,24 +131,6 @@ void orient_outward(const PointSet &points, std::vector<Tri> &tris,
   }
   for (uint32_t f = 0; f < nf; ++f)
     if (alive[f] && volume[component[f]] < 0) std::swap(tris[f][1], tris[f][2]);
-}
-
-// Edges with one face, counted from each face's corners through the faces around them: linear
-// in the faces, where sorting every edge's key cost half a second at a million points.
-std::size_t count_boundary_edges(std::size_t nv, const std::vector<Tri> &tris) {
-  const std::vector<char> alive(tris.size(), 1);
-  const Incidence inc(nv, tris, alive);
-  std::size_t boundary = 0;
-  for (const Tri &t : tris)
-    for (int i = 0; i < 3; ++i) {
-      const uint32_t u = t[i], w = t[(i + 1) % 3];
-      int faces = 0;
-      for (uint32_t k = inc.start[u]; k < inc.start[u + 1]; ++k) {
-        const Tri &h = tris[inc.faces[k]];
-        faces += (h[0] == w || h[1] == w || h[2] == w);
-      }
-      boundary += faces == 1;
-    }
   return boundary;
 }
 
@@ -157,13 +147,12 @@ std::vector<Tri> oriented_faces(MeshState &mesh) {
 void finish_mesh(const PointSet &points, std::vector<Tri> &faces, moa_stats &stats) {
   std::vector<char> alive(faces.size(), 1);
   stats.triangles_removed += enforce_single_fans(points.size(), faces, alive);
-  orient_outward(points, faces, alive);
+  stats.boundary_edges = orient_outward(points, faces, alive);
   std::size_t kept = 0;
   for (std::size_t f = 0; f < faces.size(); ++f)
     if (alive[f]) faces[kept++] = faces[f];
   faces.resize(kept);
   faces.shrink_to_fit();
-  stats.boundary_edges = count_boundary_edges(points.size(), faces);
 }
 
 }  // namespace moa

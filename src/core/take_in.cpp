@@ -6,8 +6,8 @@
 // a star: a few faces around the point replaced by the fan from the point to their rim.
 #include <algorithm>
 #include <cmath>
-#include <initializer_list>
 #include <tuple>
+#include <vector>
 
 #include "core/growth_state.hpp"
 
