@@ -60,6 +60,10 @@ struct GrowthState {
 // Algorithm 1 (paper §3.5.1). `tick(fraction)` reports progress and may throw Cancelled.
 void build_mesh(GrowthState &g, const std::function<void(double)> &tick);
 
+// Finds pieces of the mesh that a join turned inside out (their seam with the rest can never
+// close), cuts them free and turns them round; returns how many (orientation_repair.cpp).
+std::size_t repair_inside_out_patches(GrowthState &g);
+
 // Algorithm 2, the loop module (paper §3.5.2).
 void fill_loops(GrowthState &g, const std::function<void(double)> &tick);
 

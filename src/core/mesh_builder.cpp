@@ -38,6 +38,9 @@ struct Segment {
   }
 };
 
+// Rounds of repair_inside_out_patches, each followed by growth over the seams it reopened.
+constexpr int kRepairRounds = 3;
+
 using SegmentList = std::priority_queue<Segment, std::vector<Segment>, std::greater<Segment>>;
 
 class Builder {
@@ -179,6 +182,11 @@ void build_mesh(GrowthState &g, const std::function<void(double)> &tick) {
   // surroundings are built.
   builder.requeue_open_edges();
   builder.run(tick, 0.8, 1.0);
+  // Seams that cannot close because one side was turned inside out: turned back, they can.
+  for (int round = 0; round < kRepairRounds && repair_inside_out_patches(g) > 0; ++round) {
+    builder.requeue_open_edges();
+    builder.run(tick, 1.0, 1.0);
+  }
   tick(1.0);
 }
 

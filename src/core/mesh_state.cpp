@@ -229,6 +229,29 @@ std::size_t MeshState::remove_other_fans(uint32_t v, uint32_t keep) {
   return others.size();
 }
 
+void MeshState::reverse_faces(const std::vector<uint32_t> &faces) {
+  // Each face's stored order becomes its orientation, reversed for the listed faces, with
+  // parity 0 under its old root: the classes stay as they were, so the reversed faces stay
+  // tied to the rest of their class, now the other way round.
+  const uint32_t n = uint32_t(faces_.size());
+  std::vector<uint8_t> turned(n, 0);
+  std::vector<uint32_t> roots(n);
+  for (uint32_t f = 0; f < n; ++f) {
+    uint32_t parity;
+    roots[f] = find(f, parity);
+    turned[f] = uint8_t(parity);
+  }
+  for (uint32_t f : faces) turned[f] ^= 1;
+  for (uint32_t f = 0; f < n; ++f) {
+    if (turned[f]) {
+      std::swap(faces_[f].corners[1], faces_[f].corners[2]);
+      std::swap(faces_[f].next[1], faces_[f].next[2]);
+    }
+    parent_[f] = roots[f];
+    flip_[f] = 0;
+  }
+}
+
 std::size_t MeshState::memory_bytes() const {
   return faces_.capacity() * sizeof(FaceRecord) + alive_.capacity() + parent_.capacity() * 4 +
          flip_.capacity() + around_.capacity() * sizeof(VertexFaces);

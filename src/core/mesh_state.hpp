@@ -122,6 +122,10 @@ class MeshState {
     return fan_closed(v) ? 1 : around_[v].edges - around_[v].count;
   }
 
+  // Turns the faces listed the other way round within their orientation classes (which stay
+  // as they are), and makes every face's stored order its current orientation.
+  void reverse_faces(const std::vector<uint32_t> &faces);
+
   std::size_t memory_bytes() const;
   // When set, a vertex that has faces accepts only faces that share an edge with its fan.
   void set_strict_fans(bool on) { strict_fans_ = on; }

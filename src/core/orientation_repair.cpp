@@ -1,0 +1,259 @@
+// Inside-out patches. A triangle that joins two separately seeded pieces of the mesh decides,
+// from the one edge it shares with each, how one piece is oriented relative to the other. At a
+// sharp crease that edge can mislead, and the whole younger piece is then turned inside out:
+// everywhere else along its seam with the rest the two rims run the same way instead of
+// opposite ways, so no triangle can ever close the seam and the hole stays (with a wrong genus
+// once the loop module works around it).
+//
+// After Algorithm 1 such seams are found from their open edges: two open edges of one
+// orientation class that face each other across a gap and run the same way. The patch behind
+// them is cut from the rest at the few edges that hold it (a minimum cut in the graph of faces
+// across edges), turned round, and the seam is handed back to Algorithm 1.
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+#include <vector>
+
+#include "core/growth_state.hpp"
+#include "core/kd_tree.hpp"
+
+namespace moa {
+namespace {
+
+// Open edges face each other across a seam when their midpoints are within this many edge
+// lengths, their directions within about 45 degrees of parallel, and each lies ahead of the
+// other's open side (the cosine of the gap with the outward direction above kFacing).
+constexpr double kSeamReach = 1.5;
+constexpr double kParallel = 0.7;
+constexpr double kFacing = 0.5;
+// A patch held to the rest by more edges than this is not cut: the joins there agree with
+// each other and the seam is something else.
+constexpr int kMaxCut = 6;
+// Contradicting pairs across a patch's border needed to turn it; they must also outnumber
+// the agreeing ones there.
+constexpr int kMinVotes = 2;
+// Smaller patches are left to the loop module, which rebuilds small regions anyway.
+constexpr std::size_t kMinPatchFaces = 8;
+// Cuts tried per call at most.
+constexpr int kMaxAttempts = 24;
+
+struct OpenEdge {
+  Vec3 mid, dir, out;
+  double length;
+  uint32_t face;
+};
+
+// The graph of faces across their shared edges, with a unit capacity per edge in each
+// direction, for one minimum cut at a time.
+class FaceCut {
+ public:
+  explicit FaceCut(MeshState &mesh)
+      : mesh_(mesh),
+        across_(3 * mesh.face_count(), kNone),
+        mark_(mesh.face_count(), 0),
+        from_(mesh.face_count(), kNone) {
+    // The face across each edge, looked up once: the searches cross every edge many times.
+    for (uint32_t f = 0; f < mesh.face_count(); ++f) {
+      if (!mesh.alive(f)) continue;
+      const Tri &t = mesh.stored(f);
+      for (int i = 0; i < 3; ++i) {
+        uint32_t fs[2];
+        if (mesh.edge_faces(t[i], t[(i + 1) % 3], fs) == 2)
+          across_[3 * f + i] = fs[0] == f ? fs[1] : fs[0];
+      }
+    }
+  }
+
+  // Takes face f out of the graph.
+  void remove(uint32_t f) {
+    for (int i = 0; i < 3; ++i) {
+      const uint32_t h = across_[3 * f + i];
+      if (h == kNone) continue;
+      for (int j = 0; j < 3; ++j)
+        if (across_[3 * h + j] == f) across_[3 * h + j] = kNone;
+      across_[3 * f + i] = kNone;
+    }
+  }
+
+  // The faces on the source's side of a minimum cut between source and sink, or nothing when
+  // more than kMaxCut edges hold them together.
+  bool cut(uint32_t source, uint32_t sink, std::vector<uint32_t> &side) {
+    flow_.clear();
+    for (int paths = 0;; ++paths) {
+      if (!search(source, sink)) break;
+      if (paths == kMaxCut) return false;
+      for (uint32_t f = sink; f != source;) {
+        const uint32_t p = from_[f];
+        ++flow_[key(p, f)];
+        --flow_[key(f, p)];
+        f = p;
+      }
+    }
+    side = reached_;
+    return true;
+  }
+
+  // Faces connected to f across shared edges.
+  void piece(uint32_t f, std::vector<uint32_t> &out) {
+    flow_.clear();
+    bfs(f, kNone, false);
+    out = reached_;
+  }
+
+  uint32_t across(uint32_t f, int i) const { return across_[3 * f + i]; }
+
+ private:
+  static uint64_t key(uint32_t a, uint32_t b) { return (uint64_t(a) << 32) | b; }
+  int flow(uint32_t a, uint32_t b) const {
+    auto it = flow_.find(key(a, b));
+    return it == flow_.end() ? 0 : it->second;
+  }
+  bool search(uint32_t source, uint32_t sink) { return bfs(source, sink, true); }
+
+  // Breadth-first from source over edges with room left (or all edges); reached_ lists the
+  // faces reached, from_ how. Returns whether sink was reached.
+  bool bfs(uint32_t source, uint32_t sink, bool residual) {
+    ++stamp_;
+    reached_.assign(1, source);
+    mark_[source] = stamp_;
+    for (std::size_t k = 0; k < reached_.size(); ++k) {
+      const uint32_t f = reached_[k];
+      for (int i = 0; i < 3; ++i) {
+        const uint32_t g = across(f, i);
+        if (g == kNone || mark_[g] == stamp_) continue;
+        if (residual && flow(f, g) >= 1) continue;
+        mark_[g] = stamp_;
+        from_[g] = f;
+        reached_.push_back(g);
+        if (g == sink) return true;
+      }
+    }
+    return false;
+  }
+
+  MeshState &mesh_;
+  std::vector<uint32_t> across_;  // 3 per face
+  std::vector<uint32_t> mark_;
+  uint32_t stamp_ = 0;
+  std::vector<uint32_t> reached_;
+  std::vector<uint32_t> from_;
+  std::unordered_map<uint64_t, int> flow_;
+};
+
+std::vector<OpenEdge> open_edges(GrowthState &g) {
+  const auto &w = g.points.work;
+  std::vector<OpenEdge> edges;
+  for (uint32_t f = 0; f < g.mesh.face_count(); ++f) {
+    if (!g.mesh.alive(f)) continue;
+    const Tri t = g.mesh.oriented(f);
+    for (int i = 0; i < 3; ++i) {
+      const uint32_t p = t[i], q = t[(i + 1) % 3], r = t[(i + 2) % 3];
+      uint32_t fs[2];
+      if (g.mesh.edge_faces(p, q, fs) != 1) continue;
+      const Vec3 along = normalized(w[q] - w[p]), away = w[p] - w[r];
+      edges.push_back({(w[p] + w[q]) * 0.5, along,
+                       normalized(away - along * dot(away, along)), dist(w[p], w[q]), f});
+    }
+  }
+  return edges;
+}
+
+using FacePairs = std::vector<std::pair<uint32_t, uint32_t>>;
+
+// Pairs of faces of one orientation class whose open edges face each other across a seam:
+// running the same way (contradicting, the seam cannot close) or opposite ways (agreeing).
+void seam_pairs(GrowthState &g, const std::vector<OpenEdge> &edges, FacePairs &contradicting,
+                FacePairs &agreeing) {
+  std::vector<Vec3> mids(edges.size());
+  for (std::size_t i = 0; i < edges.size(); ++i) mids[i] = edges[i].mid;
+  if (mids.empty()) return;
+  KdIndex index(mids);
+  std::vector<std::pair<uint32_t, double>> near;
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    const OpenEdge &a = edges[i];
+    const double reach = kSeamReach * a.length;
+    index.within(a.mid, reach * reach, near);
+    for (const auto &[j, d2] : near) {
+      if (j <= i) continue;
+      const OpenEdge &b = edges[j];
+      const Vec3 gap = b.mid - a.mid;
+      const double d = std::sqrt(d2);
+      const double c = dot(a.dir, b.dir);
+      if (std::fabs(c) < kParallel) continue;
+      if (dot(gap, a.out) < kFacing * d || -dot(gap, b.out) < kFacing * d) continue;
+      if (g.mesh.component(a.face) != g.mesh.component(b.face)) continue;
+      (c > 0 ? contradicting : agreeing).push_back({a.face, b.face});
+    }
+  }
+  std::sort(contradicting.begin(), contradicting.end());
+}
+
+// Does the seam around `side` contradict its orientation? Pairs across its border vote.
+bool seam_contradicts(const FacePairs &contradicting, const FacePairs &agreeing,
+                      const std::vector<uint8_t> &on_side) {
+  auto across = [&](const FacePairs &pairs) {
+    int n = 0;
+    for (const auto &[a, b] : pairs) n += on_side[a] != on_side[b];
+    return n;
+  };
+  const int against = across(contradicting);
+  return against >= kMinVotes && against > across(agreeing);
+}
+
+}  // namespace
+
+std::size_t repair_inside_out_patches(GrowthState &g) {
+  const std::vector<OpenEdge> edges = open_edges(g);
+  FacePairs pairs, agreeing;
+  seam_pairs(g, edges, pairs, agreeing);
+  if (pairs.empty()) return 0;
+  FaceCut graph(g.mesh);
+  std::vector<uint8_t> settled(g.mesh.face_count(), 0);  // tried, turned or removed
+  std::vector<uint32_t> side, piece, turn;
+  std::size_t patches = 0;
+  int attempts = 0;
+  for (const auto &[a, b] : pairs) {
+    if (settled[a] || settled[b] || !g.mesh.alive(a) || !g.mesh.alive(b)) continue;
+    // Each attempt costs a few passes over the piece; the pairs of one seam share their
+    // answer, so both faces are settled whatever it is.
+    settled[a] = settled[b] = 1;
+    if (++attempts > kMaxAttempts) break;
+    if (!graph.cut(b, a, side)) continue;
+    graph.piece(b, piece);
+    // Turn the smaller side: the larger one is the rest of the surface.
+    std::vector<uint8_t> on_side(g.mesh.face_count(), 0);
+    for (uint32_t f : side) on_side[f] = 1;
+    if (2 * side.size() > piece.size()) {
+      std::vector<uint32_t> other;
+      for (uint32_t f : piece)
+        if (!on_side[f]) other.push_back(f);
+      for (uint32_t f : piece) on_side[f] ^= 1;
+      side.swap(other);
+    }
+    if (side.size() < kMinPatchFaces || !seam_contradicts(pairs, agreeing, on_side)) continue;
+    // The faces holding the patch: those of the patch across a cut edge are removed.
+    std::vector<uint32_t> holding;
+    for (uint32_t f : side)
+      for (int i = 0; i < 3; ++i) {
+        const uint32_t h = graph.across(f, i);
+        if (h != kNone && !on_side[h]) {
+          holding.push_back(f);
+          break;
+        }
+      }
+    for (uint32_t f : side) settled[f] = 1;
+    for (uint32_t f : holding) {
+      g.mesh.remove(f);
+      graph.remove(f);
+      ++g.stats.triangles_removed;
+    }
+    for (uint32_t f : side)
+      if (g.mesh.alive(f)) turn.push_back(f);
+    ++patches;
+  }
+  if (patches == 0) return 0;
+  g.mesh.reverse_faces(turn);
+  return patches;
+}
+
+}  // namespace moa
