@@ -47,9 +47,8 @@ struct OpenEdge {
 // direction, for one minimum cut at a time.
 class FaceCut {
  public:
-  explicit FaceCut(MeshState &mesh)
-      : mesh_(mesh),
-        across_(3 * mesh.face_count(), kNone),
+  explicit FaceCut(const MeshState &mesh)
+      : across_(3 * mesh.face_count(), kNone),
         mark_(mesh.face_count(), 0),
         from_(mesh.face_count(), kNone) {
     // The face across each edge, looked up once: the searches cross every edge many times.
@@ -95,7 +94,6 @@ class FaceCut {
 
   // Faces connected to f across shared edges.
   void piece(uint32_t f, std::vector<uint32_t> &out) {
-    flow_.clear();
     bfs(f, kNone, false);
     out = reached_;
   }
@@ -131,7 +129,6 @@ class FaceCut {
     return false;
   }
 
-  MeshState &mesh_;
   std::vector<uint32_t> across_;  // 3 per face
   std::vector<uint32_t> mark_;
   uint32_t stamp_ = 0;
