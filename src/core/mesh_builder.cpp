@@ -62,14 +62,10 @@ class Builder {
   }
 
   void requeue_open_edges() {
-    for (uint32_t f = 0; f < g_.mesh.face_count(); ++f) {
-      if (!g_.mesh.alive(f)) continue;
+    g_.mesh.for_each_open_edge([&](uint32_t f, int i) {
       const Tri &t = g_.mesh.stored(f);
-      for (int i = 0; i < 3; ++i) {
-        uint32_t fs[2];
-        if (g_.mesh.edge_faces(t[i], t[(i + 1) % 3], fs) == 1) push(t[i], t[(i + 1) % 3]);
-      }
-    }
+      push(t[i], t[(i + 1) % 3]);
+    });
   }
 
   void run(const std::function<void(double)> &tick, double from, double to) {

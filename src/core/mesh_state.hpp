@@ -103,6 +103,21 @@ class MeshState {
     return around_[v].count != 0 && around_[v].edges == around_[v].count;
   }
   bool is_used(uint32_t v) const { return around_[v].count != 0; }
+  // Calls visit(f, i) for each open edge (one face), as corners i, i + 1 of face f's stored
+  // order, faces in order. Edges at a vertex with a closed fan are skipped unlooked-at: they
+  // all have two faces, and a finished mesh has few open fans.
+  template <class Visit>
+  void for_each_open_edge(Visit &&visit) const {
+    for (uint32_t f = 0; f < faces_.size(); ++f) {
+      if (!alive_[f]) continue;
+      const Tri &t = faces_[f].corners;
+      for (int i = 0; i < 3; ++i) {
+        const uint32_t u = t[i], v = t[(i + 1) % 3];
+        uint32_t fs[2];
+        if (!fan_closed(u) && !fan_closed(v) && edge_faces(u, v, fs) == 1) visit(f, i);
+      }
+    }
+  }
 
   // Would oriented triangle t keep every edge at most two faces, every vertex one fan
   // (or separate open fans that may still join) and the surface orientable?

@@ -140,18 +140,15 @@ class FaceCut {
 std::vector<OpenEdge> open_edges(GrowthState &g) {
   const auto &w = g.points.work;
   std::vector<OpenEdge> edges;
-  for (uint32_t f = 0; f < g.mesh.face_count(); ++f) {
-    if (!g.mesh.alive(f)) continue;
-    const Tri t = g.mesh.oriented(f);
-    for (int i = 0; i < 3; ++i) {
-      const uint32_t p = t[i], q = t[(i + 1) % 3], r = t[(i + 2) % 3];
-      uint32_t fs[2];
-      if (g.mesh.edge_faces(p, q, fs) != 1) continue;
-      const Vec3 along = normalized(w[q] - w[p]), away = w[p] - w[r];
-      edges.push_back({(w[p] + w[q]) * 0.5, along,
-                       normalized(away - along * dot(away, along)), dist(w[p], w[q]), f});
-    }
-  }
+  g.mesh.for_each_open_edge([&](uint32_t f, int i) {
+    const Tri &s = g.mesh.stored(f);
+    uint32_t p = s[i], q = s[(i + 1) % 3];
+    const uint32_t r = s[(i + 2) % 3];
+    if (g.mesh.oriented(f) != s) std::swap(p, q);  // the edge as the face now runs
+    const Vec3 along = normalized(w[q] - w[p]), away = w[p] - w[r];
+    edges.push_back({(w[p] + w[q]) * 0.5, along, normalized(away - along * dot(away, along)),
+                     dist(w[p], w[q]), f});
+  });
   return edges;
 }
 
