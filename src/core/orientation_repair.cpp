@@ -29,11 +29,15 @@ constexpr double kFacing = 0.5;
 // A patch held to the rest by more edges than this is not cut: the joins there agree with
 // each other and the seam is something else.
 constexpr int kMaxCut = 6;
-// Contradicting pairs across a patch's border needed to turn it; they must also outnumber
-// the agreeing ones there.
+// Contradicting pairs across a patch's border needed to turn it (see seam_contradicts).
 constexpr int kMinVotes = 2;
+constexpr double kRimShare = 0.5;
+constexpr int kCutEdgeVotes = 2;
 // Smaller patches are left to the loop module, which rebuilds small regions anyway.
 constexpr std::size_t kMinPatchFaces = 8;
+// The cut separates the faces within this many steps of each face of a contradicting pair:
+// a disc that wide has a longer rim than kMaxCut edges.
+constexpr int kSideDepth = 4;
 // Cuts tried per call at most.
 constexpr int kMaxAttempts = 24;
 
@@ -50,6 +54,7 @@ class FaceCut {
   explicit FaceCut(const MeshState &mesh)
       : across_(3 * mesh.face_count(), kNone),
         mark_(mesh.face_count(), 0),
+        sink_(mesh.face_count(), 0),
         from_(mesh.face_count(), kNone) {
     // The face across each edge, looked up once: the searches cross every edge many times.
     for (uint32_t f = 0; f < mesh.face_count(); ++f) {
@@ -74,14 +79,21 @@ class FaceCut {
     }
   }
 
-  // The faces on the source's side of a minimum cut between source and sink, or nothing when
-  // more than kMaxCut edges hold them together.
-  bool cut(uint32_t source, uint32_t sink, std::vector<uint32_t> &side) {
+  // The faces on the sources' side of a minimum cut between the sources and the sinks (a face
+  // listed as both is a sink) and the number of edges cut, or nothing when more than kMaxCut
+  // edges hold them together.
+  bool cut(const std::vector<uint32_t> &sources, const std::vector<uint32_t> &sinks,
+           std::vector<uint32_t> &side, int &edges) {
     flow_.clear();
+    edges = 0;
+    ++sink_stamp_;
+    for (uint32_t f : sinks) sink_[f] = sink_stamp_;
     for (int paths = 0;; ++paths) {
-      if (!search(source, sink)) break;
+      const uint32_t end = bfs(sources, true, -1);
+      if (end == kNone) break;
       if (paths == kMaxCut) return false;
-      for (uint32_t f = sink; f != source;) {
+      edges = paths + 1;
+      for (uint32_t f = end; from_[f] != kNone;) {
         const uint32_t p = from_[f];
         ++flow_[key(p, f)];
         --flow_[key(f, p)];
@@ -92,11 +104,14 @@ class FaceCut {
     return true;
   }
 
-  // Faces connected to f across shared edges.
-  void piece(uint32_t f, std::vector<uint32_t> &out) {
-    bfs(f, kNone, false);
+  // Faces at most `depth` steps from f across shared edges (all of f's piece for depth -1).
+  void around(uint32_t f, int depth, std::vector<uint32_t> &out) {
+    ++sink_stamp_;  // no sinks
+    bfs({f}, false, depth);
     out = reached_;
   }
+  // Whether the last search reached f.
+  bool reached(uint32_t f) const { return mark_[f] == stamp_; }
 
   uint32_t across(uint32_t f, int i) const { return across_[3 * f + i]; }
 
@@ -106,15 +121,25 @@ class FaceCut {
     auto it = flow_.find(key(a, b));
     return it == flow_.end() ? 0 : it->second;
   }
-  bool search(uint32_t source, uint32_t sink) { return bfs(source, sink, true); }
 
-  // Breadth-first from source over edges with room left (or all edges); reached_ lists the
-  // faces reached, from_ how. Returns whether sink was reached.
-  bool bfs(uint32_t source, uint32_t sink, bool residual) {
+  // Breadth-first from the sources, up to `depth` steps (any number for -1), over edges with
+  // room left (residual) or all edges; reached_ lists the faces reached, from_ how. Returns
+  // the first sink reached, or kNone.
+  uint32_t bfs(const std::vector<uint32_t> &sources, bool residual, int depth) {
     ++stamp_;
-    reached_.assign(1, source);
-    mark_[source] = stamp_;
+    reached_.clear();
+    for (uint32_t s : sources) {
+      if (mark_[s] == stamp_ || sink_[s] == sink_stamp_) continue;
+      mark_[s] = stamp_;
+      from_[s] = kNone;
+      reached_.push_back(s);
+    }
+    std::size_t level_end = reached_.size();
     for (std::size_t k = 0; k < reached_.size(); ++k) {
+      if (k == level_end) {
+        if (depth-- == 0) break;
+        level_end = reached_.size();
+      }
       const uint32_t f = reached_[k];
       for (int i = 0; i < 3; ++i) {
         const uint32_t g = across(f, i);
@@ -123,15 +148,15 @@ class FaceCut {
         mark_[g] = stamp_;
         from_[g] = f;
         reached_.push_back(g);
-        if (g == sink) return true;
+        if (sink_[g] == sink_stamp_) return g;
       }
     }
-    return false;
+    return kNone;
   }
 
   std::vector<uint32_t> across_;  // 3 per face
-  std::vector<uint32_t> mark_;
-  uint32_t stamp_ = 0;
+  std::vector<uint32_t> mark_, sink_;
+  uint32_t stamp_ = 0, sink_stamp_ = 0;
   std::vector<uint32_t> reached_;
   std::vector<uint32_t> from_;
   std::unordered_map<uint64_t, int> flow_;
@@ -182,16 +207,20 @@ void seam_pairs(GrowthState &g, const std::vector<OpenEdge> &edges, FacePairs &c
   std::sort(contradicting.begin(), contradicting.end());
 }
 
-// Does the seam around `side` contradict its orientation? Pairs across its border vote.
+// Does the seam around a patch of `faces` faces (on_side), held by `cut_edges` edges,
+// contradict its orientation? Pairs across its border vote against; agreeing pairs and the
+// edges that hold it (joins that agree) vote for; and the votes against must come from a fair
+// share of its rim, which grows as the square root of its area.
 bool seam_contradicts(const FacePairs &contradicting, const FacePairs &agreeing,
-                      const std::vector<uint8_t> &on_side) {
+                      const std::vector<uint8_t> &on_side, int cut_edges, std::size_t faces) {
   auto across = [&](const FacePairs &pairs) {
     int n = 0;
     for (const auto &[a, b] : pairs) n += on_side[a] != on_side[b];
     return n;
   };
   const int against = across(contradicting);
-  return against >= kMinVotes && against > across(agreeing);
+  return against >= kMinVotes && against > across(agreeing) + kCutEdgeVotes * cut_edges &&
+         double(against) >= kRimShare * std::sqrt(double(faces));
 }
 
 }  // namespace
@@ -203,7 +232,7 @@ std::size_t repair_inside_out_patches(GrowthState &g) {
   if (pairs.empty()) return 0;
   FaceCut graph(g.mesh);
   std::vector<uint8_t> settled(g.mesh.face_count(), 0);  // tried, turned or removed
-  std::vector<uint32_t> side, piece, turn;
+  std::vector<uint32_t> side, piece, rest, turn, sources, sinks;
   std::size_t patches = 0;
   int attempts = 0;
   for (const auto &[a, b] : pairs) {
@@ -212,11 +241,25 @@ std::size_t repair_inside_out_patches(GrowthState &g) {
     // answer, so both faces are settled whatever it is.
     settled[a] = settled[b] = 1;
     if (++attempts > kMaxAttempts) break;
-    if (!graph.cut(b, a, side)) continue;
-    graph.piece(b, piece);
-    // Turn the smaller side: the larger one is the rest of the surface.
+    // The cut is sought between the faces around each side of the seam, not between the two
+    // faces alone: a face on an open rim hangs by two edges, and those would always be the
+    // smallest cut.
+    graph.around(a, kSideDepth, sinks);
+    if (graph.reached(b)) continue;  // the two lie on one side after all
+    graph.around(b, kSideDepth, sources);
+    int cut_edges;
+    if (!graph.cut(sources, sinks, side, cut_edges)) continue;
+    // The two sides: the cut's, and the rest of the faces connected to either face of the
+    // pair (a patch cut free in an earlier round is still of the same orientation class, but
+    // no longer connected: then the cut is empty and each side is a piece of its own).
     std::vector<uint8_t> on_side(g.mesh.face_count(), 0);
     for (uint32_t f : side) on_side[f] = 1;
+    graph.around(b, -1, piece);
+    if (!graph.reached(a)) {
+      graph.around(a, -1, rest);
+      piece.insert(piece.end(), rest.begin(), rest.end());
+    }
+    // Turn the smaller side: the larger one is the rest of the surface.
     if (2 * side.size() > piece.size()) {
       std::vector<uint32_t> other;
       for (uint32_t f : piece)
@@ -224,7 +267,9 @@ std::size_t repair_inside_out_patches(GrowthState &g) {
       for (uint32_t f : piece) on_side[f] ^= 1;
       side.swap(other);
     }
-    if (side.size() < kMinPatchFaces || !seam_contradicts(pairs, agreeing, on_side)) continue;
+    if (side.size() < kMinPatchFaces ||
+        !seam_contradicts(pairs, agreeing, on_side, cut_edges, side.size()))
+      continue;
     // The faces holding the patch: those of the patch across a cut edge are removed.
     std::vector<uint32_t> holding;
     for (uint32_t f : side)

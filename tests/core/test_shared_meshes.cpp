@@ -57,6 +57,18 @@ void homer_inside_out_patch_turned(void **) {
              c.name.c_str(), c.report.boundary_edges, c.report.vertices_used);
 }
 
+// Homer at 50k points, sample 6: the same crease turned a patch of about 700 faces on the lower
+// lip, held to the rest by several short runs of edges. A face on an open rim hangs by two
+// edges, so the cut is sought between the faces around each side of the seam, not between two
+// faces (158 boundary edges and genus 1 before; now about a dozen, genus 0).
+void homer_patch_held_by_several_edges_turned(void **) {
+  const Case c = make_case("homer.off 50k, sample 6", sample_of("homer.off", 50000, 0, 6));
+  MOA_EXPECT(contract_failure(c));
+  if (c.report.boundary_edges > 20 || c.report.vertices_used < 50000)
+    fail_msg("%s: %zu boundary edges (at most 20 expected), %zu of 50000 points used",
+             c.name.c_str(), c.report.boundary_edges, c.report.vertices_used);
+}
+
 // A scan of an icosahedron (points/ball.ply) whose faces carry a light, uneven roughness, with a
 // second layer half a spacing off in places. The noise estimate catches it and the smoothed
 // cloud closes with every point; without smoothing the loop module must still close it, taking
@@ -94,6 +106,7 @@ int main(void) {
       cmocka_unit_test(knot2_closed),
       cmocka_unit_test(fandisk_closed),
       cmocka_unit_test(homer_inside_out_patch_turned),
+      cmocka_unit_test(homer_patch_held_by_several_edges_turned),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
