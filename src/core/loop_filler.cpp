@@ -699,6 +699,7 @@ void fill_loops(GrowthState &g, const std::function<void(double)> &tick) {
   // Fill; then open the pinches that filling could not resolve, widen the holes that could
   // not be closed by the faces along them (a bad neighbourhood often blocks the last
   // triangles), and fill again.
+  const std::size_t first_loop_face = g.mesh.face_count();
   constexpr int kRounds = 6;
   for (int round = 0; round < kRounds; ++round) {
     LoopFiller filler(g);
@@ -718,6 +719,8 @@ void fill_loops(GrowthState &g, const std::function<void(double)> &tick) {
   }
   g.stats.triangles_removed += LoopFiller(g).drop_stray_pieces();
   if (g.params.take_in_points != 0) take_in_points(g);
+  // Closing holes beside a bridge across a narrow gap makes a handle of it: cut again.
+  cut_thin_handles(g, first_loop_face);
   g.stats.boundary_loops_after = LoopFiller(g).count_loops();
   tick(1.0);
 }

@@ -15,6 +15,13 @@ namespace moa {
 using Tri = std::array<uint32_t, 3>;
 constexpr uint32_t kNone = 0xffffffffu;
 
+// The corner of t that is neither u nor v.
+inline uint32_t third_vertex(const Tri &t, uint32_t u, uint32_t v) {
+  for (uint32_t x : t)
+    if (x != u && x != v) return x;
+  return kNone;
+}
+
 // A face and, per corner, the next face around that corner's vertex: the faces around each
 // vertex form a list threaded through the faces themselves, oldest first. 24 bytes per face
 // and 16 per vertex hold what a vector per vertex and an edge-to-face hash map held in about

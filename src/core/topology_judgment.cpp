@@ -72,12 +72,6 @@ double cosine(const Vec3 &u, const Vec3 &v) {
   return d > 0 ? dot(u, v) / d : 1.0;
 }
 
-uint32_t third_vertex(const Tri &t, uint32_t u, uint32_t v) {
-  for (uint32_t x : t)
-    if (x != u && x != v) return x;
-  return kNone;
-}
-
 // Local plane normals kept at once (TopologyJudge::normal_at).
 constexpr std::size_t kNormalCacheSlots = std::size_t(1) << 16;
 
