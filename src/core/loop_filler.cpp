@@ -15,6 +15,7 @@
 
 #include "core/growth_state.hpp"
 #include "core/hole_patch.hpp"
+#include "core/neighbors.hpp"
 
 namespace moa {
 namespace {
@@ -56,8 +57,11 @@ constexpr std::size_t kMaxPatchedLoop = 96;
 // rings removed in a run (each costs a pass over the mesh).
 constexpr int kMaxRings = 3;
 constexpr std::size_t kMaxWidenings = 256;
-// Largest open piece dropped when it lies on another (see drop_stray_pieces).
+// Largest open piece dropped when it lies on another, and largest piece dropped when its median
+// edge is longer than kSparseSpacings median point spacings of the cloud (drop_stray_pieces).
 constexpr std::size_t kMaxStrayFaces = 12;
+constexpr std::size_t kMaxSparseFaces = 64;
+constexpr double kSparseSpacings = 4.0;
 
 class LoopFiller {
  public:
@@ -138,22 +142,28 @@ class LoopFiller {
 
   // A few open faces lying on another piece of the surface (a second layer a noisy patch grew,
   // which no fill can join to the first) are taken away, so that their points are offered to
-  // the take-in like any other left-out point. A small piece away from other surfaces stays.
+  // the take-in like any other left-out point. A small piece away from other surfaces stays,
+  // unless its edges are many times the cloud's typical spacing: then its corners are a few
+  // stray points (outliers) that happened to span triangles, and they stay out of the mesh.
   std::size_t drop_stray_pieces() {
     const std::unordered_map<uint32_t, std::size_t> in_piece = faces_per_component();
     std::map<uint32_t, std::vector<uint32_t>> small;
     for (uint32_t f = 0; f < g_.mesh.face_count(); ++f)
-      if (g_.mesh.alive(f) && in_piece.at(g_.mesh.component(f)) <= kMaxStrayFaces)
+      if (g_.mesh.alive(f) && in_piece.at(g_.mesh.component(f)) <= kMaxSparseFaces)
         small[g_.mesh.component(f)].push_back(f);
     const auto &w = g_.points.work;
+    const double sparse_edge = kSparseSpacings * median_spacing(g_.nb);
     std::size_t removed = 0;
+    std::vector<double> edges;
     for (const auto &[piece, faces] : small) {
       bool open = false, on_other = true;
+      edges.clear();
       for (uint32_t f : faces) {
         const Tri &t = g_.mesh.stored(f);
         for (int i = 0; i < 3; ++i) {
           uint32_t fs[2];
           open |= g_.mesh.edge_faces(t[i], t[(i + 1) % 3], fs) == 1;
+          edges.push_back(dist(w[t[i]], w[t[(i + 1) % 3]]));
           // Some neighbour of the corner, within one local spacing, on another piece.
           const uint32_t v = t[i];
           const uint32_t *nb = g_.nb.of(v);
@@ -166,7 +176,9 @@ class LoopFiller {
           on_other &= near;
         }
       }
-      if (!open || !on_other) continue;
+      std::nth_element(edges.begin(), edges.begin() + std::ptrdiff_t(edges.size() / 2), edges.end());
+      const bool layer = faces.size() <= kMaxStrayFaces && open && on_other;
+      if (!layer && edges[edges.size() / 2] <= sparse_edge) continue;
       for (uint32_t f : faces) g_.mesh.remove(f);
       removed += faces.size();
     }

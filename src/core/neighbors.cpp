@@ -61,6 +61,12 @@ Neighborhood compute_neighbors(const KdIndex &index, unsigned k,
   return nb;
 }
 
+double median_spacing(const Neighborhood &nb) {
+  std::vector<float> s(nb.spacing);
+  std::nth_element(s.begin(), s.begin() + std::ptrdiff_t(s.size() / 2), s.end());
+  return std::max(1e-9, double(s[s.size() / 2]));
+}
+
 Vec3 plane_normal(const PointSet &points, const Neighborhood &nb, uint32_t i) {
   return pca_frame(points.work, i, nb.of(i), nb.k).axis[0];
 }

@@ -26,6 +26,9 @@ struct Neighborhood {
 Neighborhood compute_neighbors(const KdIndex &index, unsigned k,
                                const std::function<void(double)> &tick);
 
+// The median of the points' spacings (work units), never zero.
+double median_spacing(const Neighborhood &nb);
+
 // Unit normal of the least-squares plane through point i and its k neighbours, unoriented.
 // Computed when asked (the judgment caches it) rather than stored: 24 bytes per point.
 Vec3 plane_normal(const PointSet &points, const Neighborhood &nb, uint32_t i);

@@ -43,13 +43,6 @@ void return_free_memory() {
 #endif
 }
 
-// Median point spacing: the cell size of the crossing index's grid of recent faces.
-double median_spacing(const Neighborhood &nb) {
-  std::vector<float> s(nb.spacing);
-  std::nth_element(s.begin(), s.begin() + s.size() / 2, s.end());
-  return std::max(1e-9, double(s[s.size() / 2]));
-}
-
 // Replaces the judgment's geometry by a smoothed copy when the parameter and the cloud call for
 // it (smoothing.hpp); the caller's points stay in raw_work. A pass leaves some roughness at the
 // smallest scale when the noise exceeds the spacing, so the cloud is looked at again after each.
@@ -108,6 +101,7 @@ Result run_stages(const double *xyz, std::size_t count, const Params &params,
     index.reset();
     st.stage_ms[MOA_STAGE_NEIGHBORS] = ms_since(t);
 
+    // The crossing index's grid of recent faces has cells two median spacings wide.
     GrowthState g(points, nb, params, 2.0 * median_spacing(nb), st);
 
     t = Clock::now();

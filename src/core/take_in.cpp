@@ -16,8 +16,10 @@ namespace {
 
 // Only the faces around this many of a point's nearest neighbours are considered.
 constexpr unsigned kNearbyVertices = 8;
-// A point farther from a face's plane than this many local spacings is not on that face.
+// A point farther from a face's plane than this many local spacings is not on that face; a
+// point's spacing counts as at most kIsolation times its neighbours' (surface_spacing).
 constexpr double kMaxHeight = 1.0;
+constexpr double kIsolation = 2.0;
 // A face whose nearest barycentric coordinate for the point is below minus this is not near
 // enough for an edge split either.
 constexpr double kMaxOutside = 0.5;
@@ -50,6 +52,18 @@ class PointTaker {
   }
 
  private:
+  // The spacing of the surface p would join: its own, but at most kIsolation times that of its
+  // nearest neighbours. A stray point off the surface is as far from the surface as its own
+  // spacing, so measuring its height in that unit would take it in as a spike.
+  double surface_spacing(uint32_t p) const {
+    const uint32_t *nb = g_.nb.of(p);
+    const unsigned n = std::min(kNearbyVertices, g_.nb.k);
+    std::vector<float> around(n);
+    for (unsigned j = 0; j < n; ++j) around[j] = g_.nb.spacing[nb[j]];
+    std::nth_element(around.begin(), around.begin() + n / 2, around.end());
+    return std::min<double>(g_.nb.spacing[p], kIsolation * around[n / 2]);
+  }
+
   // Faces near p, by their corners as stored (a failed attempt re-adds faces under new
   // indices): those p lies over first, nearest plane first, then those its projection misses
   // by a little, which an edge split can still reach.
@@ -57,7 +71,7 @@ class PointTaker {
     const auto &w = g_.points.work;
     hosts_.clear();
     const uint32_t *nb = g_.nb.of(p);
-    const double limit = kMaxHeight * g_.nb.spacing[p];
+    const double limit = kMaxHeight * surface_spacing(p);
     for (unsigned j = 0; j < std::min(kNearbyVertices, g_.nb.k); ++j)
       for (uint32_t f : g_.mesh.faces_at(nb[j])) {
         const Tri &t = g_.mesh.stored(f);
@@ -126,7 +140,7 @@ class PointTaker {
   // triangles; a wider fan spreads the step over more, larger triangles.
   bool take_by_star(uint32_t p, const Tri &seed) {
     const auto &w = g_.points.work;
-    const double reach2 = std::pow(kStarReach * g_.nb.spacing[p], 2);
+    const double reach2 = std::pow(kStarReach * surface_spacing(p), 2);
     std::vector<Tri> patch{seed};  // by corners: a failed attempt re-adds faces anew
     std::vector<uint32_t> faces, corners;
     std::vector<Tri> fan;

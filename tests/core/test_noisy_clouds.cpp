@@ -137,6 +137,33 @@ void test_smoothing_reported(void **) {
   assert_int_equal(clean.stats.smoothing_passes, 0);
 }
 
+// Stray points: 6000 points on the unit sphere (0.046 apart) and 50 more scattered 0.3 to 1.0
+// off it, inside and out, 6 to 20 spacings from any other point. They lie on no surface: none
+// may become a vertex (each would raise a spike), and the sphere must still close with every
+// one of its own points. The take-in once measured a stray point's height over the surface in
+// its own spacing, which for a stray point is its distance to the surface, and took it in.
+const Case &sphere_with_strays_case() {
+  static const Case c = [] {
+    Points p = sphere_random(6000, 1.0, 91);
+    const Points dirs = sphere_random(50, 1.0, 92);
+    for (std::size_t i = 0; i < 50; ++i) {
+      const double radius = i % 5 == 0 ? 0.3 + 0.08 * double(i % 4) : 1.3 + 0.7 * double(i) / 50;
+      for (int k = 0; k < 3; ++k) p.push_back(dirs[3 * i + k] * radius);
+    }
+    return make_case("sphere with 50 stray points", p);
+  }();
+  return c;
+}
+
+void test_stray_points_left_out(void **) {
+  const Case &c = sphere_with_strays_case();
+  MOA_EXPECT(contract_failure(c));
+  MOA_EXPECT(closed_failure(c, 0, 6000.0 / 6050.0));
+  for (std::uint32_t v : c.run.triangles)
+    if (v >= 6000) fail_msg("stray point %u is a vertex of the mesh", v);
+  assert_int_equal(c.run.stats.unused_points, 50);
+}
+
 void test_rough_sphere_closed(void **) { MOA_EXPECT(closed_failure(rough_sphere_case(), 0)); }
 void test_rough_genus3_closed(void **) { MOA_EXPECT(closed_failure(rough_genus3_case(), 3)); }
 
@@ -166,6 +193,7 @@ int main(void) {
       cmocka_unit_test(test_rough_genus3_closed),
       cmocka_unit_test(test_rough_hemisphere_disk),
       cmocka_unit_test(test_rough_cube_closed),
+      cmocka_unit_test(test_stray_points_left_out),
       MOA_CONTRACT_ENTRIES(rough_hemisphere),
       MOA_CONTRACT_ENTRIES(rough_cube),
       MOA_CONTRACT_ENTRIES(rough_sphere),
