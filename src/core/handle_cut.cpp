@@ -1,12 +1,13 @@
 // Thin handles. Where a sample is too sparse to tell a narrow gap from a fold (between fingers,
 // at the corner of a mouth), Algorithm 1 can bridge the gap with a few triangles, and the loop
 // module then closes the holes beside the bridge: the surface gains a handle whose waist is a
-// cycle of three edges that bounds no face. A handle of the sampled surface itself is many
-// spacings round, so such a cycle, when it does not separate the surface, marks a bridge. The
-// bridge is cut there: the faces at the cycle's corners on one side go, the cycle is capped by
-// one triangle on the other side, and the hole left is patched (hole_patch.hpp). All of it
-// passes the judgment, or nothing changes.
+// cycle of three or four edges that bounds no face and has no chord. A handle of the sampled
+// surface itself is many spacings round, so such a cycle, when it does not separate the
+// surface, marks a bridge. The bridge is cut there: the faces at the cycle's corners on one side
+// go, the cycle is capped on the other side, and the hole left is patched (both by
+// hole_patch.hpp). All of it passes the judgment, or nothing changes.
 #include <algorithm>
+#include <array>
 #include <tuple>
 #include <vector>
 
@@ -22,55 +23,93 @@ constexpr std::size_t kSearchBudget = 200000;
 // Longest loop around the removed faces that is patched (the patch costs its cube).
 constexpr std::size_t kMaxLoop = 64;
 
+// A waist: its corners in order (three or four).
 struct Cycle {
-  uint32_t u, v, w;
+  std::array<uint32_t, 4> corners{kNone, kNone, kNone, kNone};
+  int n = 0;
+  bool has(uint32_t x) const {
+    return std::find(corners.begin(), corners.begin() + n, x) != corners.begin() + n;
+  }
+  bool operator<(const Cycle &o) const { return std::tie(n, corners) < std::tie(o.n, o.corners); }
+  bool operator==(const Cycle &o) const { return n == o.n && corners == o.corners; }
 };
 
-// Cycles of three edges with two faces each that are not the edges of one face, through the
-// given vertices: their neighbours are marked, and the neighbours of each neighbour looked up.
-// Each cycle is listed once, its corners in increasing order.
-std::vector<Cycle> three_edge_cycles(const MeshState &mesh, const std::vector<uint32_t> &at,
-                                     std::size_t vertex_count) {
-  std::vector<Cycle> cycles;
-  std::vector<uint32_t> mark(vertex_count, kNone), ring;  // u on the neighbours of u
-  for (uint32_t u : at) {
-    ring.clear();
-    for (uint32_t f : mesh.faces_at(u))
-      for (uint32_t x : mesh.stored(f))
-        if (x != u && mark[x] != u) {
-          mark[x] = u;
-          ring.push_back(x);
-        }
-    for (uint32_t v : ring)
-      for (uint32_t h : mesh.faces_at(v)) {
-        // Each edge v-w once: from the face that runs v -> w in stored order.
-        const Tri &t = mesh.stored(h);
-        const int i = int(std::find(t.begin(), t.end(), v) - t.begin());
-        const uint32_t w = t[(i + 1) % 3];
-        if (mark[w] != u || std::count(t.begin(), t.end(), u) != 0) continue;
-        uint32_t fs[2];
-        if (mesh.edge_faces(u, v, fs) != 2 || mesh.edge_faces(v, w, fs) != 2 ||
-            mesh.edge_faces(w, u, fs) != 2)
-          continue;
-        bool face = false;  // u-v-w itself
-        for (uint32_t g : mesh.faces_at(u)) {
-          const Tri &s = mesh.stored(g);
-          face |= std::count(s.begin(), s.end(), v) + std::count(s.begin(), s.end(), w) == 2;
-        }
-        if (face) continue;
-        uint32_t c[3] = {u, v, w};
-        std::sort(c, c + 3);
-        cycles.push_back({c[0], c[1], c[2]});
-      }
+// The cycle with these corners, in a form that lists each cycle once: rotated to start at its
+// lowest corner, running toward the lower of that corner's two neighbours.
+Cycle canonical(std::array<uint32_t, 4> c, int n) {
+  std::rotate(c.begin(), std::min_element(c.begin(), c.begin() + n), c.begin() + n);
+  if (c[n - 1] < c[1]) std::reverse(c.begin() + 1, c.begin() + n);
+  Cycle cycle;
+  cycle.corners = c;
+  cycle.n = n;
+  return cycle;
+}
+
+// Whether every edge of the cycle has two faces.
+bool edges_full(const MeshState &mesh, const std::array<uint32_t, 4> &c, int n) {
+  for (int i = 0; i < n; ++i) {
+    uint32_t fs[2];
+    if (mesh.edge_faces(c[i], c[(i + 1) % n], fs) != 2) return false;
   }
-  std::sort(cycles.begin(), cycles.end(), [](const Cycle &a, const Cycle &b) {
-    return std::tie(a.u, a.v, a.w) < std::tie(b.u, b.v, b.w);
-  });
-  cycles.erase(std::unique(cycles.begin(), cycles.end(),
-                           [](const Cycle &a, const Cycle &b) {
-                             return a.u == b.u && a.v == b.v && a.w == b.w;
-                           }),
-               cycles.end());
+  return true;
+}
+
+// Cycles of three edges that are not one face's, and of four edges without a chord, all edges
+// with two faces, through the given vertices. From each vertex u: a three-edge cycle joins two
+// of its neighbours; a four-edge cycle runs through two of them to a vertex x two steps away.
+std::vector<Cycle> short_cycles(const MeshState &mesh, const std::vector<uint32_t> &at,
+                                std::size_t vertex_count) {
+  std::vector<Cycle> cycles;
+  // u on the neighbours of u, and on the vertices two steps from it.
+  std::vector<uint32_t> near(vertex_count, kNone), second(vertex_count, kNone);
+  std::vector<uint32_t> ring, ring_v, far, common;
+  auto neighbours = [&](uint32_t v, std::vector<uint32_t> &out) {
+    out.clear();
+    for (uint32_t f : mesh.faces_at(v))
+      for (uint32_t x : mesh.stored(f))
+        if (x != v && std::find(out.begin(), out.end(), x) == out.end()) out.push_back(x);
+  };
+  auto is_face = [&](uint32_t u, uint32_t v, uint32_t w) {
+    for (uint32_t g : mesh.faces_at(u)) {
+      const Tri &t = mesh.stored(g);
+      if (std::count(t.begin(), t.end(), v) + std::count(t.begin(), t.end(), w) == 2) return true;
+    }
+    return false;
+  };
+  for (uint32_t u : at) {
+    neighbours(u, ring);
+    for (uint32_t x : ring) near[x] = u;
+    far.clear();
+    for (uint32_t v : ring) {
+      neighbours(v, ring_v);
+      for (uint32_t x : ring_v) {
+        if (x == u) continue;
+        if (near[x] == u) {
+          const std::array<uint32_t, 4> c{u, v, x, kNone};
+          if (v < x && !is_face(u, v, x) && edges_full(mesh, c, 3))
+            cycles.push_back(canonical(c, 3));
+        } else if (second[x] != u) {
+          second[x] = u;
+          far.push_back(x);
+        }
+      }
+    }
+    for (uint32_t x : far) {
+      neighbours(x, ring_v);
+      common.clear();
+      for (uint32_t w : ring_v)
+        if (near[w] == u) common.push_back(w);
+      for (std::size_t i = 0; i < common.size(); ++i)
+        for (std::size_t j = i + 1; j < common.size(); ++j) {
+          uint32_t fs[2];
+          if (mesh.edge_faces(common[i], common[j], fs) > 0) continue;  // a chord
+          const std::array<uint32_t, 4> c{u, common[i], x, common[j]};
+          if (edges_full(mesh, c, 4)) cycles.push_back(canonical(c, 4));
+        }
+    }
+  }
+  std::sort(cycles.begin(), cycles.end());
+  cycles.erase(std::unique(cycles.begin(), cycles.end()), cycles.end());
   return cycles;
 }
 
@@ -79,19 +118,19 @@ class HandleCutter {
   explicit HandleCutter(GrowthState &g) : g_(g) {}
 
   bool cut(const Cycle &c) {
-    const uint32_t corners[3] = {c.u, c.v, c.w};
-    uint32_t on_edge[3][2];  // the two faces on each edge of the cycle
-    for (int i = 0; i < 3; ++i)
-      if (g_.mesh.edge_faces(corners[i], corners[(i + 1) % 3], on_edge[i]) != 2) return false;
-    // A face u-v-w may have been added since the cycles were listed.
-    for (uint32_t f : g_.mesh.faces_at(c.u)) {
-      const Tri &t = g_.mesh.stored(f);
-      if (std::count(t.begin(), t.end(), c.v) + std::count(t.begin(), t.end(), c.w) == 2)
-        return false;
+    // The mesh may have changed since the cycles were listed.
+    if (!edges_full(g_.mesh, c.corners, c.n)) return false;
+    if (c.n == 3) {
+      for (uint32_t f : g_.mesh.faces_at(c.corners[0])) {
+        const Tri &t = g_.mesh.stored(f);
+        if (c.has(t[0]) && c.has(t[1]) && c.has(t[2])) return false;
+      }
     }
-    if (!goes_round(c, on_edge[0][0], on_edge[0][1])) return false;  // it separates
-    for (int side = 0; side < 2; ++side)
-      if (cut_side(corners, on_edge[0][side])) return true;
+    uint32_t fs[2];
+    g_.mesh.edge_faces(c.corners[0], c.corners[1], fs);
+    if (!goes_round(c, fs[0], fs[1])) return false;  // it separates
+    for (uint32_t first : fs)
+      if (cut_side(c, first)) return true;
     return false;
   }
 
@@ -101,7 +140,6 @@ class HandleCutter {
   // surface stops the search once the smaller side is exhausted (often the few faces around a
   // point the loop module took in), and a bridge's way round is found from both ends.
   bool goes_round(const Cycle &c, uint32_t from, uint32_t to) {
-    auto corner = [&](uint32_t x) { return x == c.u || x == c.v || x == c.w; };
     if (mark_.size() < g_.mesh.face_count()) mark_.resize(g_.mesh.face_count(), 0);
     stamp_ += 2;  // stamp_ - 1 marks the faces reached from `from`, stamp_ those from `to`
     const uint32_t stamps[2] = {stamp_ - 1, stamp_};
@@ -118,7 +156,7 @@ class HandleCutter {
       const Tri &t = g_.mesh.stored(q[next[s]++]);
       for (int i = 0; i < 3; ++i) {
         const uint32_t a = t[i], b = t[(i + 1) % 3];
-        if (corner(a) && corner(b)) continue;
+        if (c.has(a) && c.has(b)) continue;  // a cycle edge: the cycle has no chord
         uint32_t fs[2];
         const int n = g_.mesh.edge_faces(a, b, fs);
         for (int j = 0; j < n; ++j) {
@@ -152,57 +190,72 @@ class HandleCutter {
     return false;
   }
 
-  // Removes the faces at the corners on the side of face `first` (on edge u-v), caps the cycle
-  // on the other side and patches the hole; or leaves everything as it was.
-  bool cut_side(const uint32_t (&corners)[3], uint32_t first) {
-    // Walk the side round the cycle: from u-v at u to w, from there at w to v, and at v back
-    // to the face the walk began with.
+  // The unit normal of the face as oriented.
+  Vec3 normal_of(uint32_t f) {
+    const auto &w = g_.points.work;
+    const Tri t = g_.mesh.oriented(f);
+    return normalized(cross(w[t[1]] - w[t[0]], w[t[2]] - w[t[0]]));
+  }
+
+  // The patch of a hole whose loop runs along the given vertices (hole_patch.hpp), from the
+  // faces that now border it; nothing if no patch fits.
+  std::vector<Tri> patch(const std::vector<uint32_t> &loop) {
+    std::vector<Vec3> rim(loop.size());
+    for (std::size_t j = 0; j < loop.size(); ++j) {
+      uint32_t fs[2];
+      if (g_.mesh.edge_faces(loop[j], loop[(j + 1) % loop.size()], fs) != 1) return {};
+      rim[j] = normal_of(fs[0]);
+    }
+    return smoothest_patch(g_.points.work, loop, rim, [this](uint32_t a, uint32_t b) {
+      uint32_t fs[2];
+      return g_.mesh.edge_faces(a, b, fs) > 0;
+    });
+  }
+
+  // Removes the faces at the corners on the side of face `first` (on the cycle's first edge),
+  // caps the cycle on the other side and patches the hole; or leaves everything as it was.
+  bool cut_side(const Cycle &c, uint32_t first) {
+    // Walk the side round the cycle: at corner 0 from the first edge round to the last, at the
+    // last corner from there round to the one before, and so on back to the face it began with.
     std::vector<uint32_t> side;
-    uint32_t at_uw, at_wv, at_vu;
-    if (!arc(corners[0], corners[1], corners[2], first, side, at_uw)) return false;
-    if (!arc(corners[2], corners[0], corners[1], at_uw, side, at_wv)) return false;
-    if (!arc(corners[1], corners[2], corners[0], at_wv, side, at_vu) || at_vu != first)
-      return false;
+    uint32_t f = first;
+    for (int s = 0; s < c.n; ++s) {
+      const int k = (c.n - s) % c.n;
+      if (!arc(c.corners[k], c.corners[(k + 1) % c.n], c.corners[(k + c.n - 1) % c.n], f, side, f))
+        return false;
+    }
+    if (f != first) return false;
     std::sort(side.begin(), side.end());
     side.erase(std::unique(side.begin(), side.end()), side.end());
 
     std::vector<Tri> removed;
-    for (uint32_t f : side) removed.push_back(g_.mesh.oriented(f));
+    for (uint32_t g : side) removed.push_back(g_.mesh.oriented(g));
     std::vector<uint32_t> loop;
-    if (!outer_loop(removed, corners, loop)) return false;
+    if (!outer_loop(removed, c, loop)) return false;
+    for (uint32_t g : side) g_.mesh.remove(g);
 
-    // The cap runs along u-v against the face that stays there.
-    uint32_t fs[2];
-    g_.mesh.edge_faces(corners[0], corners[1], fs);
-    const Tri kept = g_.mesh.oriented(fs[0] == first ? fs[1] : fs[0]);
-    bool forward = false;  // kept runs u -> v
-    for (int i = 0; i < 3; ++i) forward |= kept[i] == corners[0] && kept[(i + 1) % 3] == corners[1];
-    const Tri cap = forward ? Tri{corners[1], corners[0], corners[2]}
-                            : Tri{corners[0], corners[1], corners[2]};
-
-    const auto &w = g_.points.work;
-    std::vector<Vec3> rim(loop.size());
-    for (std::size_t j = 0; j < loop.size(); ++j) {
-      const uint32_t a = loop[j], b = loop[(j + 1) % loop.size()];
-      g_.mesh.edge_faces(a, b, fs);
-      const bool first_removed = std::binary_search(side.begin(), side.end(), fs[0]);
-      const Tri t = g_.mesh.oriented(first_removed ? fs[1] : fs[0]);
-      rim[j] = normalized(cross(w[t[1]] - w[t[0]], w[t[2]] - w[t[0]]));
-    }
-    for (uint32_t f : side) g_.mesh.remove(f);
-    std::vector<Tri> added = smoothest_patch(w, loop, rim, [this](uint32_t a, uint32_t b) {
-      uint32_t gs[2];
-      return g_.mesh.edge_faces(a, b, gs) > 0;
-    });
+    // The cap's loop runs along each cycle edge against the face that stays there: the way
+    // the removed face `first` ran along the first edge.
+    const Tri t = removed[std::lower_bound(side.begin(), side.end(), first) - side.begin()];
+    bool forward = false;  // `first` runs corner 0 -> corner 1
+    for (int i = 0; i < 3; ++i) forward |= t[i] == c.corners[0] && t[(i + 1) % 3] == c.corners[1];
+    std::vector<uint32_t> cap_loop(c.corners.begin(), c.corners.begin() + c.n);
+    if (!forward) std::reverse(cap_loop.begin(), cap_loop.end());
+    std::vector<Tri> added = patch(cap_loop);
     if (!added.empty()) {
-      added.insert(added.begin(), cap);
-      if (g_.add_all_or_none(added)) {
-        g_.stats.triangles_removed += removed.size();
-        g_.stats.triangles_loops += added.size();
-        return true;
+      const std::vector<Tri> hole = patch(loop);
+      if (!hole.empty()) {
+        added.insert(added.end(), hole.begin(), hole.end());
+        // A bridge is a flattened tube: its cap lies close over the faces next to it, which the
+        // test for a second layer would refuse. The crossing test still runs.
+        if (g_.add_all_or_none(added, true)) {
+          g_.stats.triangles_removed += removed.size();
+          g_.stats.triangles_loops += added.size();
+          return true;
+        }
       }
     }
-    for (const Tri &t : removed) g_.add_face(t);  // as it was
+    for (const Tri &r : removed) g_.add_face(r);  // as it was
     return false;
   }
 
@@ -210,16 +263,14 @@ class HandleCutter {
   // their edges that touch no corner and border no other removed face, in the faces' direction
   // (that of the hole's edges). False unless they form one simple loop through every vertex of
   // the faces but the corners.
-  bool outer_loop(const std::vector<Tri> &removed, const uint32_t (&corners)[3],
-                  std::vector<uint32_t> &loop) {
-    auto corner = [&](uint32_t x) { return x == corners[0] || x == corners[1] || x == corners[2]; };
+  bool outer_loop(const std::vector<Tri> &removed, const Cycle &c, std::vector<uint32_t> &loop) {
     std::vector<std::pair<uint32_t, uint32_t>> edges;
     std::vector<uint32_t> others;  // vertices of the faces but the corners
     for (const Tri &t : removed)
       for (int i = 0; i < 3; ++i) {
         const uint32_t a = t[i], b = t[(i + 1) % 3];
-        if (!corner(a) && !corner(b)) edges.push_back({a, b});
-        if (!corner(a)) others.push_back(a);
+        if (!c.has(a) && !c.has(b)) edges.push_back({a, b});
+        if (!c.has(a)) others.push_back(a);
       }
     // An edge both of whose faces go lies inside the hole.
     std::vector<std::pair<uint32_t, uint32_t>> rim;
@@ -269,7 +320,7 @@ std::size_t cut_thin_handles(GrowthState &g, std::size_t first_face) {
         }
   std::sort(at.begin(), at.end());
   at.erase(std::unique(at.begin(), at.end()), at.end());
-  const std::vector<Cycle> cycles = three_edge_cycles(g.mesh, at, g.points.size());
+  const std::vector<Cycle> cycles = short_cycles(g.mesh, at, g.points.size());
   HandleCutter cutter(g);
   std::size_t cut = 0;
   for (const Cycle &c : cycles) cut += cutter.cut(c);

@@ -323,7 +323,7 @@ bool TopologyJudge::flatness_fails(const Tri &t, const uint32_t *sphere, std::si
 }
 
 Verdict TopologyJudge::judge(const Tri &t, const uint32_t *sphere, std::size_t count,
-                             bool relaxed) {
+                             bool relaxed, bool layers_allowed) {
   if (degenerate(t, relaxed)) return Verdict::Degenerate;
   switch (mesh_.check(t)) {
     case TopologyVerdict::Ok:
@@ -345,7 +345,8 @@ Verdict TopologyJudge::judge(const Tri &t, const uint32_t *sphere, std::size_t c
   if (crossings_.crosses(t, kGatherPad * mean_edge, mesh_, near_)) return Verdict::Intersection;
   // A sliver's plane is too ill-defined to project onto: on the relaxed passes it is left to
   // the exact crossing test alone.
-  if (!(relaxed && is_sliver(t)) && overlaps_layer(t, frame, near_)) return Verdict::VertexFold;
+  if (!layers_allowed && !(relaxed && is_sliver(t)) && overlaps_layer(t, frame, near_))
+    return Verdict::VertexFold;
   return Verdict::Accept;
 }
 

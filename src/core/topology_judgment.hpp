@@ -40,8 +40,10 @@ class TopologyJudge {
   // Judges oriented triangle t. `sphere` lists the points inside the candidate sphere, the
   // population the function T is evaluated over; pass count 0 to skip T. `relaxed` skips the
   // local-plane tests (T and the normal deviation), as the loop module does on its last pass;
-  // the manifold, orientation, fold and crossing tests always run.
-  Verdict judge(const Tri &t, const uint32_t *sphere, std::size_t count, bool relaxed = false);
+  // the manifold, orientation, fold and crossing tests always run. `layers_allowed` also skips
+  // the test for faces lying close over t, for the cut of a flattened bridge (handle_cut.cpp).
+  Verdict judge(const Tri &t, const uint32_t *sphere, std::size_t count, bool relaxed = false,
+                bool layers_allowed = false);
   // Records a verdict in the run statistics.
   static void count(Verdict v, moa_stats &stats);
 

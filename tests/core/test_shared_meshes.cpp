@@ -79,6 +79,19 @@ void homer_finger_bridges_cut(void **) {
   MOA_EXPECT(closed_failure(c, 0, 1.0));
 }
 
+// Homer at 50k points, sample 5: a bridge between the fingers whose waist is four edges without
+// a chord (genus 1 before). Cut, the surface has genus 0; the three boundary edges left are a
+// small hole elsewhere. One piece, genus (2 - V + E - F - holes) / 2 = 0.
+void homer_four_edge_waist_cut(void **) {
+  const Case c = make_case("homer.off 50k, sample 5", sample_of("homer.off", 50000, 0, 5));
+  MOA_EXPECT(contract_failure(c));
+  const long genus =
+      (2 - c.report.euler_characteristic - long(c.report.boundary_loops)) / 2;
+  if (c.report.components != 1 || genus != 0 || c.report.boundary_edges > 6)
+    fail_msg("%s: %zu pieces, genus %ld, %zu boundary edges (1, 0 and at most 6 expected)",
+             c.name.c_str(), c.report.components, genus, c.report.boundary_edges);
+}
+
 // A scan of an icosahedron (points/ball.ply) whose faces carry a light, uneven roughness, with a
 // second layer half a spacing off in places. The noise estimate catches it and the smoothed
 // cloud closes with every point; without smoothing the loop module must still close it, taking
@@ -118,6 +131,7 @@ int main(void) {
       cmocka_unit_test(homer_inside_out_patch_turned),
       cmocka_unit_test(homer_patch_held_by_several_edges_turned),
       cmocka_unit_test(homer_finger_bridges_cut),
+      cmocka_unit_test(homer_four_edge_waist_cut),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
