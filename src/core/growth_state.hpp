@@ -65,8 +65,8 @@ void build_mesh(GrowthState &g, const std::function<void(double)> &tick);
 // close), cuts them free and turns them round; returns how many (orientation_repair.cpp).
 std::size_t repair_inside_out_patches(GrowthState &g);
 
-// Cuts the bridges that made a handle whose waist is three edges bounding no face, near the
-// faces numbered from first_face on (see handle_cut.cpp); returns how many.
+// Cuts the bridges that made a handle with a waist of three or four edges, near the faces
+// numbered from first_face on (see handle_cut.cpp); returns how many.
 std::size_t cut_thin_handles(GrowthState &g, std::size_t first_face);
 
 // Algorithm 2, the loop module (paper §3.5.2).

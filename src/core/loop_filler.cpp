@@ -176,7 +176,8 @@ class LoopFiller {
           on_other &= near;
         }
       }
-      std::nth_element(edges.begin(), edges.begin() + std::ptrdiff_t(edges.size() / 2), edges.end());
+      std::nth_element(edges.begin(), edges.begin() + std::ptrdiff_t(edges.size() / 2),
+                       edges.end());
       const bool layer = faces.size() <= kMaxStrayFaces && open && on_other;
       if (!layer && edges[edges.size() / 2] <= sparse_edge) continue;
       for (uint32_t f : faces) g_.mesh.remove(f);

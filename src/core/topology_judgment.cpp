@@ -322,8 +322,8 @@ bool TopologyJudge::flatness_fails(const Tri &t, const uint32_t *sphere, std::si
   return false;
 }
 
-Verdict TopologyJudge::judge(const Tri &t, const uint32_t *sphere, std::size_t count,
-                             bool relaxed, bool layers_allowed) {
+Verdict TopologyJudge::judge(const Tri &t, const uint32_t *sphere, std::size_t count, bool relaxed,
+                             bool layers_allowed) {
   if (degenerate(t, relaxed)) return Verdict::Degenerate;
   switch (mesh_.check(t)) {
     case TopologyVerdict::Ok:

@@ -85,8 +85,7 @@ void homer_finger_bridges_cut(void **) {
 void homer_four_edge_waist_cut(void **) {
   const Case c = make_case("homer.off 50k, sample 5", sample_of("homer.off", 50000, 0, 5));
   MOA_EXPECT(contract_failure(c));
-  const long genus =
-      (2 - c.report.euler_characteristic - long(c.report.boundary_loops)) / 2;
+  const long genus = (2 - c.report.euler_characteristic - long(c.report.boundary_loops)) / 2;
   if (c.report.components != 1 || genus != 0 || c.report.boundary_edges > 6)
     fail_msg("%s: %zu pieces, genus %ld, %zu boundary edges (1, 0 and at most 6 expected)",
              c.name.c_str(), c.report.components, genus, c.report.boundary_edges);
