@@ -13,6 +13,7 @@
 
 #include "core/growth_state.hpp"
 #include "core/hole_patch.hpp"
+#include "core/marks.hpp"
 
 namespace moa {
 namespace {
@@ -57,11 +58,9 @@ bool edges_full(const MeshState &mesh, const std::array<uint32_t, 4> &c, int n) 
 // Cycles of three edges that are not one face's, and of four edges without a chord, all edges
 // with two faces, through the given vertices. From each vertex u: a three-edge cycle joins two
 // of its neighbours; a four-edge cycle runs through two of them to a vertex x two steps away.
-std::vector<Cycle> short_cycles(const MeshState &mesh, const std::vector<uint32_t> &at,
-                                std::size_t vertex_count) {
+std::vector<Cycle> short_cycles(const MeshState &mesh, const std::vector<uint32_t> &at) {
   std::vector<Cycle> cycles;
-  // u on the neighbours of u, and on the vertices two steps from it.
-  std::vector<uint32_t> near(vertex_count, kNone), second(vertex_count, kNone);
+  IndexMarks near, second;  // the neighbours of u, and the vertices two steps from it
   std::vector<uint32_t> ring, ring_v, far, common;
   auto neighbours = [&](uint32_t v, std::vector<uint32_t> &out) {
     out.clear();
@@ -78,18 +77,20 @@ std::vector<Cycle> short_cycles(const MeshState &mesh, const std::vector<uint32_
   };
   for (uint32_t u : at) {
     neighbours(u, ring);
-    for (uint32_t x : ring) near[x] = u;
+    near.clear();
+    second.clear();
+    for (uint32_t x : ring) near.set(x);
     far.clear();
     for (uint32_t v : ring) {
       neighbours(v, ring_v);
       for (uint32_t x : ring_v) {
         if (x == u) continue;
-        if (near[x] == u) {
+        if (near.has(x)) {
           const std::array<uint32_t, 4> c{u, v, x, kNone};
           if (v < x && !is_face(u, v, x) && edges_full(mesh, c, 3))
             cycles.push_back(canonical(c, 3));
-        } else if (second[x] != u) {
-          second[x] = u;
+        } else if (!second.has(x)) {
+          second.set(x);
           far.push_back(x);
         }
       }
@@ -98,7 +99,7 @@ std::vector<Cycle> short_cycles(const MeshState &mesh, const std::vector<uint32_
       neighbours(x, ring_v);
       common.clear();
       for (uint32_t w : ring_v)
-        if (near[w] == u) common.push_back(w);
+        if (near.has(w)) common.push_back(w);
       for (std::size_t i = 0; i < common.size(); ++i)
         for (std::size_t j = i + 1; j < common.size(); ++j) {
           uint32_t fs[2];
@@ -140,11 +141,11 @@ class HandleCutter {
   // surface stops the search once the smaller side is exhausted (often the few faces around a
   // point the loop module took in), and a bridge's way round is found from both ends.
   bool goes_round(const Cycle &c, uint32_t from, uint32_t to) {
-    if (mark_.size() < g_.mesh.face_count()) mark_.resize(g_.mesh.face_count(), 0);
-    stamp_ += 2;  // stamp_ - 1 marks the faces reached from `from`, stamp_ those from `to`
-    const uint32_t stamps[2] = {stamp_ - 1, stamp_};
-    mark_[from] = stamps[0];
-    mark_[to] = stamps[1];
+    IndexMarks *reached[2] = {&reached_, &other_reached_};  // from `from`, from `to`
+    reached_.clear();
+    other_reached_.clear();
+    reached_.set(from);
+    other_reached_.set(to);
     std::vector<uint32_t> *queues[2] = {&queue_, &other_queue_};
     queue_.assign(1, from);
     other_queue_.assign(1, to);
@@ -160,9 +161,9 @@ class HandleCutter {
         uint32_t fs[2];
         const int n = g_.mesh.edge_faces(a, b, fs);
         for (int j = 0; j < n; ++j) {
-          if (mark_[fs[j]] == stamps[1 - s]) return true;  // the searches met
-          if (mark_[fs[j]] == stamps[s]) continue;
-          mark_[fs[j]] = stamps[s];
+          if (reached[1 - s]->has(fs[j])) return true;  // the searches met
+          if (reached[s]->has(fs[j])) continue;
+          reached[s]->set(fs[j]);
           q.push_back(fs[j]);
         }
       }
@@ -301,8 +302,9 @@ class HandleCutter {
   }
 
   GrowthState &g_;
-  std::vector<uint32_t> queue_, other_queue_, mark_;  // the search's faces, its stamps
-  uint32_t stamp_ = 0;
+  // The two-sided search's faces in order, and the faces each side reached (a bit per face).
+  std::vector<uint32_t> queue_, other_queue_;
+  IndexMarks reached_, other_reached_;
 };
 
 }  // namespace
@@ -320,7 +322,7 @@ std::size_t cut_thin_handles(GrowthState &g, std::size_t first_face) {
         }
   std::sort(at.begin(), at.end());
   at.erase(std::unique(at.begin(), at.end()), at.end());
-  const std::vector<Cycle> cycles = short_cycles(g.mesh, at, g.points.size());
+  const std::vector<Cycle> cycles = short_cycles(g.mesh, at);
   HandleCutter cutter(g);
   std::size_t cut = 0;
   for (const Cycle &c : cycles) cut += cutter.cut(c);
