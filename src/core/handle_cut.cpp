@@ -5,7 +5,8 @@
 // surface itself is many spacings round, so such a cycle, when it does not separate the
 // surface, marks a bridge. The bridge is cut there: the faces at the cycle's corners on one side
 // go, the cycle is capped on the other side, and the hole left is patched (both by
-// hole_patch.hpp). All of it passes the judgment, or nothing changes.
+// hole_patch.hpp). All of it passes the judgment but its test for a second layer (a bridge is
+// a flattened tube, so its cap lies close over the faces beside it), or nothing changes.
 #include <algorithm>
 #include <array>
 #include <tuple>
@@ -247,8 +248,7 @@ class HandleCutter {
       const std::vector<Tri> hole = patch(loop);
       if (!hole.empty()) {
         added.insert(added.end(), hole.begin(), hole.end());
-        // A bridge is a flattened tube: its cap lies close over the faces next to it, which the
-        // test for a second layer would refuse. The crossing test still runs.
+        // The crossing test still runs; the second-layer test would refuse the cap (see top).
         if (g_.add_all_or_none(added, true)) {
           g_.stats.triangles_removed += removed.size();
           g_.stats.triangles_loops += added.size();
