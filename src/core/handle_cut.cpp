@@ -192,28 +192,6 @@ class HandleCutter {
     return false;
   }
 
-  // The unit normal of the face as oriented.
-  Vec3 normal_of(uint32_t f) {
-    const auto &w = g_.points.work;
-    const Tri t = g_.mesh.oriented(f);
-    return normalized(cross(w[t[1]] - w[t[0]], w[t[2]] - w[t[0]]));
-  }
-
-  // The patch of a hole whose loop runs along the given vertices (hole_patch.hpp), from the
-  // faces that now border it; nothing if no patch fits.
-  std::vector<Tri> patch(const std::vector<uint32_t> &loop) {
-    std::vector<Vec3> rim(loop.size());
-    for (std::size_t j = 0; j < loop.size(); ++j) {
-      uint32_t fs[2];
-      if (g_.mesh.edge_faces(loop[j], loop[(j + 1) % loop.size()], fs) != 1) return {};
-      rim[j] = normal_of(fs[0]);
-    }
-    return smoothest_patch(g_.points.work, loop, rim, [this](uint32_t a, uint32_t b) {
-      uint32_t fs[2];
-      return g_.mesh.edge_faces(a, b, fs) > 0;
-    });
-  }
-
   // Removes the faces at the corners on the side of face `first` (on the cycle's first edge),
   // caps the cycle on the other side and patches the hole; or leaves everything as it was.
   bool cut_side(const Cycle &c, uint32_t first) {
@@ -243,9 +221,9 @@ class HandleCutter {
     for (int i = 0; i < 3; ++i) forward |= t[i] == c.corners[0] && t[(i + 1) % 3] == c.corners[1];
     std::vector<uint32_t> cap_loop(c.corners.begin(), c.corners.begin() + c.n);
     if (!forward) std::reverse(cap_loop.begin(), cap_loop.end());
-    std::vector<Tri> added = patch(cap_loop);
+    std::vector<Tri> added = smoothest_patch(g_.mesh, g_.points.work, cap_loop);
     if (!added.empty()) {
-      const std::vector<Tri> hole = patch(loop);
+      const std::vector<Tri> hole = smoothest_patch(g_.mesh, g_.points.work, loop);
       if (!hole.empty()) {
         added.insert(added.end(), hole.begin(), hole.end());
         // The crossing test still runs; the second-layer test would refuse the cap (see top).

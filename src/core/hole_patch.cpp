@@ -103,4 +103,19 @@ std::vector<Tri> smoothest_patch(const std::vector<Vec3> &points, const std::vec
   return patch;
 }
 
+std::vector<Tri> smoothest_patch(MeshState &mesh, const std::vector<Vec3> &points,
+                                 const std::vector<uint32_t> &loop) {
+  std::vector<Vec3> rim(loop.size());
+  for (std::size_t j = 0; j < loop.size(); ++j) {
+    uint32_t fs[2];
+    if (mesh.edge_faces(loop[j], loop[(j + 1) % loop.size()], fs) != 1) return {};
+    const Tri f = mesh.oriented(fs[0]);
+    rim[j] = normalized(cross(points[f[1]] - points[f[0]], points[f[2]] - points[f[0]]));
+  }
+  return smoothest_patch(points, loop, rim, [&mesh](uint32_t a, uint32_t b) {
+    uint32_t fs[2];
+    return mesh.edge_faces(a, b, fs) > 0;
+  });
+}
+
 }  // namespace moa

@@ -22,4 +22,9 @@ std::vector<Tri> smoothest_patch(const std::vector<Vec3> &points, const std::vec
                                  const std::vector<Vec3> &rim_normals,
                                  const std::function<bool(uint32_t, uint32_t)> &is_edge);
 
+// The same for a hole of `mesh`: every edge loop[j] -> loop[j+1] must have exactly one face,
+// whose normal counts as the rim's there; nothing otherwise.
+std::vector<Tri> smoothest_patch(MeshState &mesh, const std::vector<Vec3> &points,
+                                 const std::vector<uint32_t> &loop);
+
 }  // namespace moa

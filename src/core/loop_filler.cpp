@@ -253,20 +253,9 @@ class LoopFiller {
 
   // Adds the smoothest patch of the loop if all of it passes the judgment; else adds nothing.
   bool patch(const std::vector<uint32_t> &loop) {
-    const auto &w = g_.points.work;
-    const std::size_t n = loop.size();
-    if (n > kMaxPatchedLoop || !still_open(loop)) return false;  // a broken trace is no hole
-    std::vector<Vec3> rim(n);
-    for (std::size_t j = 0; j < n; ++j) {
-      uint32_t fs[2];
-      g_.mesh.edge_faces(loop[j], loop[(j + 1) % n], fs);
-      Tri f = g_.mesh.oriented(fs[0]);
-      rim[j] = normalized(cross(w[f[1]] - w[f[0]], w[f[2]] - w[f[0]]));
-    }
-    const std::vector<Tri> tris = smoothest_patch(w, loop, rim, [this](uint32_t a, uint32_t b) {
-      uint32_t fs[2];
-      return g_.mesh.edge_faces(a, b, fs) > 0;
-    });
+    // A broken trace is no hole: smoothest_patch wants one face on every edge of the loop.
+    if (loop.size() > kMaxPatchedLoop) return false;
+    const std::vector<Tri> tris = smoothest_patch(g_.mesh, g_.points.work, loop);
     if (tris.empty() || !g_.add_all_or_none(tris)) return false;
     g_.stats.triangles_loops += tris.size();
     return true;
