@@ -46,27 +46,32 @@ void elephant_closed(void **) { expect_closed("elephant.off", 0, 3, 5); }
 void knot2_closed(void **) { expect_closed("knot2.off", 0, 2, 5); }
 void fandisk_closed(void **) { expect_closed("fandisk.off", 0, 0, 30); }
 
+// Homer at 50k points, test sample `seed`.
+Case homer_sample(unsigned seed) {
+  return make_case("homer.off 50k, sample " + std::to_string(seed),
+                   sample_of("homer.off", 50000, 0, seed));
+}
+
+// The contract, every point used, and at most `max_boundary` boundary edges.
+void expect_nearly_closed(const Case &c, std::size_t max_boundary) {
+  MOA_EXPECT(contract_failure(c));
+  if (c.report.boundary_edges > max_boundary || c.report.vertices_used < c.points.size() / 3)
+    fail_msg("%s: %zu boundary edges (at most %zu expected), %zu of %zu points used",
+             c.name.c_str(), c.report.boundary_edges, max_boundary, c.report.vertices_used,
+             c.points.size() / 3);
+}
+
 // Homer at 50k points, sample 3: at the sharp concave crease of the mouth a join once turned a
 // patch of 1,500 faces inside out, and its seam with the rest (126 boundary edges) could never
 // close. The inside-out patch is now found from its seam, cut free and turned back.
-void homer_inside_out_patch_turned(void **) {
-  const Case c = make_case("homer.off 50k, sample 3", sample_of("homer.off", 50000, 0, 3));
-  MOA_EXPECT(contract_failure(c));
-  if (c.report.boundary_edges > 8 || c.report.vertices_used < 50000)
-    fail_msg("%s: %zu boundary edges (at most 8 expected), %zu of 50000 points used",
-             c.name.c_str(), c.report.boundary_edges, c.report.vertices_used);
-}
+void homer_inside_out_patch_turned(void **) { expect_nearly_closed(homer_sample(3), 8); }
 
 // Homer at 50k points, sample 6: the same crease turned a patch of about 700 faces on the lower
 // lip, held to the rest by several short runs of edges. A face on an open rim hangs by two
 // edges, so the cut is sought between the faces around each side of the seam, not between two
 // faces (158 boundary edges and genus 1 before; now about a dozen, genus 0).
 void homer_patch_held_by_several_edges_turned(void **) {
-  const Case c = make_case("homer.off 50k, sample 6", sample_of("homer.off", 50000, 0, 6));
-  MOA_EXPECT(contract_failure(c));
-  if (c.report.boundary_edges > 20 || c.report.vertices_used < 50000)
-    fail_msg("%s: %zu boundary edges (at most 20 expected), %zu of 50000 points used",
-             c.name.c_str(), c.report.boundary_edges, c.report.vertices_used);
+  expect_nearly_closed(homer_sample(6), 20);
 }
 
 // Homer at 50k points, sample 7: between the fingers the gap is under two spacings, and a few
@@ -74,7 +79,7 @@ void homer_patch_held_by_several_edges_turned(void **) {
 // handles (genus 2), each with a waist of three edges bounding no face. Those are cut and the
 // surface comes out closed with its true genus.
 void homer_finger_bridges_cut(void **) {
-  const Case c = make_case("homer.off 50k, sample 7", sample_of("homer.off", 50000, 0, 7));
+  const Case c = homer_sample(7);
   MOA_EXPECT(contract_failure(c));
   MOA_EXPECT(closed_failure(c, 0, 1.0));
 }
@@ -83,7 +88,7 @@ void homer_finger_bridges_cut(void **) {
 // a chord (genus 1 before). Cut, the surface has genus 0; the three boundary edges left are a
 // small hole elsewhere. One piece, genus (2 - V + E - F - holes) / 2 = 0.
 void homer_four_edge_waist_cut(void **) {
-  const Case c = make_case("homer.off 50k, sample 5", sample_of("homer.off", 50000, 0, 5));
+  const Case c = homer_sample(5);
   MOA_EXPECT(contract_failure(c));
   const long genus = (2 - c.report.euler_characteristic - long(c.report.boundary_loops)) / 2;
   if (c.report.components != 1 || genus != 0 || c.report.boundary_edges > 6)
