@@ -75,7 +75,8 @@ class LoopFiller {
   // The last resort: each hole still open is patched at once with the triangulation of its
   // loop that bends the surface least (hole_patch.hpp), if every triangle of it passes the
   // relaxed judgment. When the faces around the hole fold over it, they go and the wider hole
-  // is patched instead; if that fails too, they are put back. Returns the holes closed.
+  // is patched instead; if that fails too, they are put back, and the hole is patched without
+  // the second-layer test. Returns the holes closed.
   std::size_t patch_open_holes() {
     collect_hole_edges();
     loops_ = trace_loops();
@@ -106,6 +107,10 @@ class LoopFiller {
         }
         for (const Tri &t : removed) g_.add_face(t);  // as it was before
       }
+      // Still open: at a sharp corner the faces across the crease can lie over the patch in
+      // projection without crossing it. The hole takes its patch without the second-layer
+      // test then; the crossing test still runs.
+      if (!done) done = patch_pieces(hole, true);
       closed += done;
     }
     return closed;
@@ -222,7 +227,7 @@ class LoopFiller {
 
   // A loop through a vertex twice (a pinch) is two holes meeting there: each is patched on
   // its own. All pieces or none.
-  bool patch_pieces(const std::vector<uint32_t> &loop) {
+  bool patch_pieces(const std::vector<uint32_t> &loop, bool layers_allowed = false) {
     std::vector<std::vector<uint32_t>> pieces;
     std::vector<uint32_t> rest = loop;
     std::unordered_map<uint32_t, std::size_t> first;
@@ -241,7 +246,7 @@ class LoopFiller {
     const std::size_t faces_before = g_.mesh.face_count(), counted = g_.stats.triangles_loops;
     std::size_t done = 0;
     for (const auto &piece : pieces) {
-      if (piece.size() < 3 || !patch(piece)) break;
+      if (piece.size() < 3 || !patch(piece, layers_allowed)) break;
       ++done;
     }
     if (done == pieces.size()) return true;
@@ -252,11 +257,11 @@ class LoopFiller {
   }
 
   // Adds the smoothest patch of the loop if all of it passes the judgment; else adds nothing.
-  bool patch(const std::vector<uint32_t> &loop) {
+  bool patch(const std::vector<uint32_t> &loop, bool layers_allowed) {
     // A broken trace is no hole: smoothest_patch wants one face on every edge of the loop.
     if (loop.size() > kMaxPatchedLoop) return false;
     const std::vector<Tri> tris = smoothest_patch(g_.mesh, g_.points.work, loop);
-    if (tris.empty() || !g_.add_all_or_none(tris)) return false;
+    if (tris.empty() || !g_.add_all_or_none(tris, layers_allowed)) return false;
     g_.stats.triangles_loops += tris.size();
     return true;
   }

@@ -46,6 +46,15 @@ void elephant_closed(void **) { expect_closed("elephant.off", 0, 3, 5); }
 void knot2_closed(void **) { expect_closed("knot2.off", 0, 2, 5); }
 void fandisk_closed(void **) { expect_closed("fandisk.off", 0, 0, 30); }
 
+// Fandisk at 50k points, sample 1: a hole of three edges at a sharp corner, its neighbours bent
+// 63 to 92 degrees away. The faces across the crease overlap its only patch in projection,
+// without crossing it, so the second-layer test refused the patch (3 boundary edges before).
+void fandisk_corner_hole_patched(void **) {
+  const Case c = make_case("fandisk.off 50k, sample 1", sample_of("fandisk.off", 50000, 0, 1));
+  MOA_EXPECT(contract_failure(c));
+  MOA_EXPECT(closed_failure(c, 0, 1.0));
+}
+
 // Homer at 50k points, test sample `seed`.
 Case homer_sample(unsigned seed) {
   return make_case("homer.off 50k, sample " + std::to_string(seed),
@@ -132,6 +141,7 @@ int main(void) {
       cmocka_unit_test(ball_scan_closed_unsmoothed),
       cmocka_unit_test(knot2_closed),
       cmocka_unit_test(fandisk_closed),
+      cmocka_unit_test(fandisk_corner_hole_patched),
       cmocka_unit_test(homer_inside_out_patch_turned),
       cmocka_unit_test(homer_patch_held_by_several_edges_turned),
       cmocka_unit_test(homer_finger_bridges_cut),
