@@ -169,14 +169,15 @@ class LoopFiller {
           uint32_t fs[2];
           open |= g_.mesh.edge_faces(t[i], t[(i + 1) % 3], fs) == 1;
           edges.push_back(dist(w[t[i]], w[t[(i + 1) % 3]]));
-          // Some neighbour of the corner, within one local spacing, on another piece.
+          // Some neighbour of the corner on another piece, within one local spacing: the
+          // larger of the two points', as a clump of close points has a tiny one.
           const uint32_t v = t[i];
           const uint32_t *nb = g_.nb.of(v);
           bool near = false;
           for (unsigned j = 0; j < g_.nb.k && !near; ++j) {
             const FacesAround around = g_.mesh.faces_at(nb[j]);
             near = !around.empty() && g_.mesh.component(around.front()) != piece &&
-                   dist(w[v], w[nb[j]]) <= g_.nb.spacing[v];
+                   dist(w[v], w[nb[j]]) <= std::max(g_.nb.spacing[v], g_.nb.spacing[nb[j]]);
           }
           on_other &= near;
         }
@@ -725,9 +726,11 @@ void fill_loops(GrowthState &g, const std::function<void(double)> &tick) {
   for (int round = 0; round < kPatchRounds && LoopFiller(g).patch_open_holes() > 0; ++round) {
   }
   g.stats.triangles_removed += LoopFiller(g).drop_stray_pieces();
-  if (g.params.take_in_points != 0) take_in_points(g);
-  // Closing holes beside a bridge across a narrow gap makes a handle of it: cut again.
+  // Closing holes beside a bridge across a narrow gap makes a handle of it: cut again. Before
+  // the take-in, which lengthens a handle's waist when it puts a point on it, and which takes
+  // in the points a cut leaves out.
   cut_thin_handles(g, first_loop_face);
+  if (g.params.take_in_points != 0) take_in_points(g);
   g.stats.boundary_loops_after = LoopFiller(g).count_loops();
   tick(1.0);
 }
