@@ -75,8 +75,8 @@ class LoopFiller {
   // The last resort: each hole still open is patched at once with the triangulation of its
   // loop that bends the surface least (hole_patch.hpp), if every triangle of it passes the
   // relaxed judgment. When the faces around the hole fold over it, they go and the wider hole
-  // is patched instead; if that fails too, they are put back, and the hole is patched without
-  // the second-layer test. Returns the holes closed.
+  // is patched instead; if that fails too, they are put back, and all of it is tried again
+  // without the second-layer test. Returns the holes closed.
   std::size_t patch_open_holes() {
     collect_hole_edges();
     loops_ = trace_loops();
@@ -87,30 +87,12 @@ class LoopFiller {
     std::size_t closed = 0, widenings = 0;
     for (const std::vector<uint32_t> &hole : holes) {
       if (!still_open(hole)) continue;  // widening a neighbouring hole changed it
-      bool done = patch_pieces(hole);
-      // Widen first without dropping any vertex out of the mesh, then, if that fails, freely:
-      // a closed surface missing a point beats one with a hole.
-      for (bool keep_vertices : {true, false}) {
-        std::vector<uint32_t> loop = hole;
-        std::vector<Tri> removed;
-        for (int ring = 0; !done && ring < kMaxRings && widenings < kMaxWidenings; ++ring) {
-          ++widenings;
-          std::vector<Tri> rim = remove_rim(loop, keep_vertices);
-          removed.insert(removed.end(), rim.begin(), rim.end());
-          loop = loop_around(loop, rim);
-          if (rim.empty() || loop.empty() || loop.size() > kMaxPatchedLoop) break;
-          done = patch_pieces(loop);
-        }
-        if (done) {
-          g_.stats.triangles_removed += removed.size();
-          break;
-        }
-        for (const Tri &t : removed) g_.add_face(t);  // as it was before
-      }
-      // Still open: at a sharp corner the faces across the crease can lie over the patch in
-      // projection without crossing it. The hole takes its patch without the second-layer
-      // test then; the crossing test still runs.
-      if (!done) done = patch_pieces(hole, true);
+      // At a sharp corner the faces across the crease can lie over a patch in projection
+      // without crossing it: when nothing closes the hole with the second-layer test, it is
+      // tried again without it (the crossing test still runs).
+      bool done = false;
+      for (bool layers_allowed : {false, true})
+        if (!done) done = patch_or_widen(hole, layers_allowed, widenings);
       closed += done;
     }
     return closed;
@@ -226,9 +208,37 @@ class LoopFiller {
     return true;
   }
 
+  // Patches the hole, or else removes up to kMaxRings rings of faces around it and patches the
+  // wider hole; puts the faces back if that fails too.
+  bool patch_or_widen(const std::vector<uint32_t> &hole, bool layers_allowed,
+                      std::size_t &widenings) {
+    if (patch_pieces(hole, layers_allowed)) return true;
+    // Widen first without dropping any vertex out of the mesh, then, if that fails, freely:
+    // a closed surface missing a point beats one with a hole.
+    for (bool keep_vertices : {true, false}) {
+      std::vector<uint32_t> loop = hole;
+      std::vector<Tri> removed;
+      bool done = false;
+      for (int ring = 0; !done && ring < kMaxRings && widenings < kMaxWidenings; ++ring) {
+        ++widenings;
+        std::vector<Tri> rim = remove_rim(loop, keep_vertices);
+        removed.insert(removed.end(), rim.begin(), rim.end());
+        loop = loop_around(loop, rim);
+        if (rim.empty() || loop.empty() || loop.size() > kMaxPatchedLoop) break;
+        done = patch_pieces(loop, layers_allowed);
+      }
+      if (done) {
+        g_.stats.triangles_removed += removed.size();
+        return true;
+      }
+      for (const Tri &t : removed) g_.add_face(t);  // as it was before
+    }
+    return false;
+  }
+
   // A loop through a vertex twice (a pinch) is two holes meeting there: each is patched on
   // its own. All pieces or none.
-  bool patch_pieces(const std::vector<uint32_t> &loop, bool layers_allowed = false) {
+  bool patch_pieces(const std::vector<uint32_t> &loop, bool layers_allowed) {
     std::vector<std::vector<uint32_t>> pieces;
     std::vector<uint32_t> rest = loop;
     std::unordered_map<uint32_t, std::size_t> first;
