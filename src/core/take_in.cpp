@@ -44,10 +44,16 @@ class PointTaker {
  public:
   explicit PointTaker(GrowthState &g) : g_(g) {}
 
+  // Each point left out is tried with the whole judgment; those still out, again without its
+  // second-layer test: beside a crease the faces across it can overlap a split in projection
+  // without crossing it.
   std::size_t run() {
     std::size_t taken = 0;
-    for (uint32_t p = 0; p < g_.points.size(); ++p)
-      if (!g_.mesh.is_used(p) && take(p)) ++taken;
+    for (bool layers_allowed : {false, true}) {
+      layers_allowed_ = layers_allowed;
+      for (uint32_t p = 0; p < g_.points.size(); ++p)
+        if (!g_.mesh.is_used(p) && take(p)) ++taken;
+    }
     return taken;
   }
 
@@ -196,7 +202,7 @@ class PointTaker {
       kept.push_back(g_.mesh.oriented(f));
       g_.mesh.remove(f);
     }
-    if (g_.add_all_or_none(parts)) {
+    if (g_.add_all_or_none(parts, layers_allowed_)) {
       g_.stats.triangles_loops += parts.size() - old.size();
       return true;
     }
@@ -215,6 +221,7 @@ class PointTaker {
   };
 
   GrowthState &g_;
+  bool layers_allowed_ = false;
   std::vector<Host> hosts_;
 };
 
