@@ -57,10 +57,12 @@ constexpr std::size_t kMaxPatchedLoop = 96;
 // rings removed in a run (each costs a pass over the mesh).
 constexpr int kMaxRings = 3;
 constexpr std::size_t kMaxWidenings = 256;
-// Largest open piece dropped when it lies on another, and largest piece dropped when its median
-// edge is longer than kSparseSpacings median point spacings of the cloud (drop_stray_pieces).
+// Largest piece dropped when it lies within kStrayReach spacings of another, and largest piece
+// dropped when its median edge is longer than kSparseSpacings median point spacings of the
+// cloud (drop_stray_pieces).
 constexpr std::size_t kMaxStrayFaces = 12;
 constexpr std::size_t kMaxSparseFaces = 64;
+constexpr double kStrayReach = 2.5;
 constexpr double kSparseSpacings = 4.0;
 
 class LoopFiller {
@@ -127,46 +129,46 @@ class LoopFiller {
     return removed;
   }
 
-  // A few open faces lying on another piece of the surface (a second layer a noisy patch grew,
-  // which no fill can join to the first) are taken away, so that their points are offered to
-  // the take-in like any other left-out point. A small piece away from other surfaces stays,
-  // unless its edges are many times the cloud's typical spacing: then its corners are a few
-  // stray points (outliers) that happened to span triangles, and they stay out of the mesh.
+  // A few faces lying within kStrayReach spacings of another piece of the surface are taken
+  // away, so that their points are offered to the take-in like any other left-out point: a
+  // second layer a noisy patch grew, which no fill can join to the first, or an island left in
+  // a hole of the other piece, which blocks its patch. A small piece away from other surfaces
+  // stays, unless its edges are many times the cloud's typical spacing: then its corners are a
+  // few stray points (outliers) that happened to span triangles, and they stay out of the mesh.
   std::size_t drop_stray_pieces() {
-    const std::unordered_map<uint32_t, std::size_t> in_piece = faces_per_component();
+    const Pieces pieces = connected_pieces();
     std::map<uint32_t, std::vector<uint32_t>> small;
     for (uint32_t f = 0; f < g_.mesh.face_count(); ++f)
-      if (g_.mesh.alive(f) && in_piece.at(g_.mesh.component(f)) <= kMaxSparseFaces)
-        small[g_.mesh.component(f)].push_back(f);
+      if (g_.mesh.alive(f) && pieces.size[pieces.of[f]] <= kMaxSparseFaces)
+        small[pieces.of[f]].push_back(f);
     const auto &w = g_.points.work;
     const double sparse_edge = kSparseSpacings * median_spacing(g_.nb);
     std::size_t removed = 0;
     std::vector<double> edges;
     for (const auto &[piece, faces] : small) {
-      bool open = false, on_other = true;
+      bool on_other = true;
       edges.clear();
       for (uint32_t f : faces) {
         const Tri &t = g_.mesh.stored(f);
         for (int i = 0; i < 3; ++i) {
-          uint32_t fs[2];
-          open |= g_.mesh.edge_faces(t[i], t[(i + 1) % 3], fs) == 1;
           edges.push_back(dist(w[t[i]], w[t[(i + 1) % 3]]));
-          // Some neighbour of the corner on another piece, within one local spacing: the
-          // larger of the two points', as a clump of close points has a tiny one.
+          // Some neighbour of the corner on another piece, within kStrayReach local spacings:
+          // the larger of the two points', as a clump of close points has a tiny one.
           const uint32_t v = t[i];
           const uint32_t *nb = g_.nb.of(v);
           bool near = false;
           for (unsigned j = 0; j < g_.nb.k && !near; ++j) {
             const FacesAround around = g_.mesh.faces_at(nb[j]);
-            near = !around.empty() && g_.mesh.component(around.front()) != piece &&
-                   dist(w[v], w[nb[j]]) <= std::max(g_.nb.spacing[v], g_.nb.spacing[nb[j]]);
+            near = !around.empty() && pieces.of[around.front()] != piece &&
+                   dist(w[v], w[nb[j]]) <=
+                       kStrayReach * std::max(g_.nb.spacing[v], g_.nb.spacing[nb[j]]);
           }
           on_other &= near;
         }
       }
       std::nth_element(edges.begin(), edges.begin() + std::ptrdiff_t(edges.size() / 2),
                        edges.end());
-      const bool layer = faces.size() <= kMaxStrayFaces && open && on_other;
+      const bool layer = faces.size() <= kMaxStrayFaces && on_other;
       if (!layer && edges[edges.size() / 2] <= sparse_edge) continue;
       for (uint32_t f : faces) g_.mesh.remove(f);
       removed += faces.size();
@@ -191,6 +193,42 @@ class LoopFiller {
   }
 
  private:
+  // The pieces of the live faces, joined through shared edges: the piece of each face and the
+  // faces in each. Not the orientation components: their union-find never splits, so a piece
+  // cut off by removed faces would still count as part of the other.
+  struct Pieces {
+    std::vector<uint32_t> of;
+    std::vector<std::size_t> size;
+  };
+  Pieces connected_pieces() const {
+    Pieces p;
+    p.of.assign(g_.mesh.face_count(), kNone);
+    std::vector<uint32_t> stack;
+    for (uint32_t start = 0; start < g_.mesh.face_count(); ++start) {
+      if (!g_.mesh.alive(start) || p.of[start] != kNone) continue;
+      const uint32_t id = uint32_t(p.size.size());
+      p.size.push_back(0);
+      p.of[start] = id;
+      stack.assign(1, start);
+      while (!stack.empty()) {
+        const uint32_t f = stack.back();
+        stack.pop_back();
+        ++p.size[id];
+        const Tri &t = g_.mesh.stored(f);
+        for (int i = 0; i < 3; ++i) {
+          uint32_t fs[2];
+          const int n = g_.mesh.edge_faces(t[i], t[(i + 1) % 3], fs);
+          for (int k = 0; k < n; ++k)
+            if (p.of[fs[k]] == kNone) {
+              p.of[fs[k]] = id;
+              stack.push_back(fs[k]);
+            }
+        }
+      }
+    }
+    return p;
+  }
+
   // Live faces of each piece of the mesh (orientation component), by its representative.
   std::unordered_map<uint32_t, std::size_t> faces_per_component() {
     std::unordered_map<uint32_t, std::size_t> count;
@@ -729,9 +767,11 @@ void fill_loops(GrowthState &g, const std::function<void(double)> &tick) {
     g.stats.triangles_removed += removed;
     if (removed == 0) break;
   }
-  // Patching one hole can free its neighbour (the faces a widened hole gave up were what
-  // blocked the other): patch again while that closes holes. Then the stray layers go, and
-  // their points join the others left out.
+  // Stray pieces go before the patching (an island in a hole blocks its patch) and after it
+  // (widening a hole can cut a piece off); their points join the others left out. Patching one
+  // hole can free its neighbour (the faces a widened hole gave up were what blocked the
+  // other): patch again while that closes holes.
+  g.stats.triangles_removed += LoopFiller(g).drop_stray_pieces();
   constexpr int kPatchRounds = 3;
   for (int round = 0; round < kPatchRounds && LoopFiller(g).patch_open_holes() > 0; ++round) {
   }

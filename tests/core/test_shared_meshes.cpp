@@ -100,6 +100,12 @@ void homer_finger_bridges_cut(void **) { expect_watertight(homer_sample(7), 0); 
 // the crease (3 boundary edges) takes the patch the second-layer test refused.
 void homer_four_edge_waist_cut(void **) { expect_watertight(homer_sample(5), 0); }
 
+// Homer at 50k points, sample 14: eight faces grown from a few points inside a hole, 1.3 to 2
+// spacings from its rim, were an island that blocked the hole's patch (6 boundary edges, 2
+// pieces). An island within a few spacings of another piece is dropped before the patching,
+// and its points taken in.
+void homer_island_in_hole_dropped(void **) { expect_watertight(homer_sample(14), 0); }
+
 // A scan of an icosahedron (points/ball.ply) whose faces carry a light, uneven roughness, with a
 // second layer half a spacing off in places. The noise estimate catches it and the smoothed
 // cloud closes with every point; without smoothing the loop module must still close it and
@@ -141,6 +147,7 @@ int main(void) {
       cmocka_unit_test(homer_patch_held_by_several_edges_turned),
       cmocka_unit_test(homer_finger_bridges_cut),
       cmocka_unit_test(homer_four_edge_waist_cut),
+      cmocka_unit_test(homer_island_in_hole_dropped),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
