@@ -193,39 +193,31 @@ class LoopFiller {
   }
 
  private:
-  // The pieces of the live faces, joined through shared edges: the piece of each face and the
-  // faces in each. Not the orientation components: their union-find never splits, so a piece
-  // cut off by removed faces would still count as part of the other.
+  // The pieces of the live faces, joined through shared vertices: the piece of each face and
+  // the faces in each. Not the orientation components: their union-find never splits, so a
+  // piece cut off by removed faces would still count as part of the other.
   struct Pieces {
     std::vector<uint32_t> of;
     std::vector<std::size_t> size;
   };
   Pieces connected_pieces() const {
+    std::vector<uint32_t> parent(g_.points.size());
+    for (uint32_t v = 0; v < parent.size(); ++v) parent[v] = v;
+    auto root = [&](uint32_t x) {
+      while (parent[x] != x) x = parent[x] = parent[parent[x]];
+      return x;
+    };
+    for (uint32_t f = 0; f < g_.mesh.face_count(); ++f)
+      if (g_.mesh.alive(f)) {
+        const Tri &t = g_.mesh.stored(f);
+        parent[root(t[1])] = root(t[0]);
+        parent[root(t[2])] = root(t[0]);
+      }
     Pieces p;
     p.of.assign(g_.mesh.face_count(), kNone);
-    std::vector<uint32_t> stack;
-    for (uint32_t start = 0; start < g_.mesh.face_count(); ++start) {
-      if (!g_.mesh.alive(start) || p.of[start] != kNone) continue;
-      const uint32_t id = uint32_t(p.size.size());
-      p.size.push_back(0);
-      p.of[start] = id;
-      stack.assign(1, start);
-      while (!stack.empty()) {
-        const uint32_t f = stack.back();
-        stack.pop_back();
-        ++p.size[id];
-        const Tri &t = g_.mesh.stored(f);
-        for (int i = 0; i < 3; ++i) {
-          uint32_t fs[2];
-          const int n = g_.mesh.edge_faces(t[i], t[(i + 1) % 3], fs);
-          for (int k = 0; k < n; ++k)
-            if (p.of[fs[k]] == kNone) {
-              p.of[fs[k]] = id;
-              stack.push_back(fs[k]);
-            }
-        }
-      }
-    }
+    p.size.assign(g_.points.size(), 0);
+    for (uint32_t f = 0; f < g_.mesh.face_count(); ++f)
+      if (g_.mesh.alive(f)) ++p.size[p.of[f] = root(g_.mesh.stored(f)[0])];
     return p;
   }
 
