@@ -136,11 +136,11 @@ class LoopFiller {
   // stays, unless its edges are many times the cloud's typical spacing: then its corners are a
   // few stray points (outliers) that happened to span triangles, and they stay out of the mesh.
   std::size_t drop_stray_pieces() {
-    const Pieces pieces = connected_pieces();
+    const Pieces pieces(g_.mesh, g_.points.size());
     std::map<uint32_t, std::vector<uint32_t>> small;
     for (uint32_t f = 0; f < g_.mesh.face_count(); ++f)
-      if (g_.mesh.alive(f) && pieces.size[pieces.of[f]] <= kMaxSparseFaces)
-        small[pieces.of[f]].push_back(f);
+      if (g_.mesh.alive(f) && pieces.faces(pieces.of(f)) <= kMaxSparseFaces)
+        small[pieces.of(f)].push_back(f);
     const auto &w = g_.points.work;
     const double sparse_edge = kSparseSpacings * median_spacing(g_.nb);
     std::size_t removed = 0;
@@ -159,7 +159,7 @@ class LoopFiller {
           bool near = false;
           for (unsigned j = 0; j < g_.nb.k && !near; ++j) {
             const FacesAround around = g_.mesh.faces_at(nb[j]);
-            near = !around.empty() && pieces.of[around.front()] != piece &&
+            near = !around.empty() && pieces.of(around.front()) != piece &&
                    dist(w[v], w[nb[j]]) <=
                        kStrayReach * std::max(g_.nb.spacing[v], g_.nb.spacing[nb[j]]);
           }
@@ -193,33 +193,35 @@ class LoopFiller {
   }
 
  private:
-  // The pieces of the live faces, joined through shared vertices: the piece of each face and
-  // the faces in each. Not the orientation components: their union-find never splits, so a
-  // piece cut off by removed faces would still count as part of the other.
-  struct Pieces {
-    std::vector<uint32_t> of;
-    std::vector<std::size_t> size;
-  };
-  Pieces connected_pieces() const {
-    std::vector<uint32_t> parent(g_.points.size());
-    for (uint32_t v = 0; v < parent.size(); ++v) parent[v] = v;
-    auto root = [&](uint32_t x) {
-      while (parent[x] != x) x = parent[x] = parent[parent[x]];
+  // The pieces of the live faces, joined through shared vertices. Not the orientation
+  // components: their union-find never splits, so a piece cut off by removed faces would still
+  // count as part of the other. Four bytes per point.
+  class Pieces {
+   public:
+    explicit Pieces(const MeshState &mesh, std::size_t points) : mesh_(mesh), parent_(points) {
+      for (uint32_t v = 0; v < parent_.size(); ++v) parent_[v] = v;
+      for (uint32_t f = 0; f < mesh.face_count(); ++f)
+        if (mesh.alive(f)) {
+          const Tri &t = mesh.stored(f);
+          parent_[root(t[1])] = root(t[0]);
+          parent_[root(t[2])] = root(t[0]);
+        }
+      for (uint32_t v = 0; v < parent_.size(); ++v) parent_[v] = root(v);  // flat from here on
+      for (uint32_t f = 0; f < mesh.face_count(); ++f)
+        if (mesh.alive(f)) ++faces_[of(f)];
+    }
+    uint32_t of(uint32_t face) const { return parent_[mesh_.stored(face)[0]]; }
+    std::size_t faces(uint32_t piece) const { return faces_.at(piece); }
+
+   private:
+    uint32_t root(uint32_t x) {
+      while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
       return x;
-    };
-    for (uint32_t f = 0; f < g_.mesh.face_count(); ++f)
-      if (g_.mesh.alive(f)) {
-        const Tri &t = g_.mesh.stored(f);
-        parent[root(t[1])] = root(t[0]);
-        parent[root(t[2])] = root(t[0]);
-      }
-    Pieces p;
-    p.of.assign(g_.mesh.face_count(), kNone);
-    p.size.assign(g_.points.size(), 0);
-    for (uint32_t f = 0; f < g_.mesh.face_count(); ++f)
-      if (g_.mesh.alive(f)) ++p.size[p.of[f] = root(g_.mesh.stored(f)[0])];
-    return p;
-  }
+    }
+    const MeshState &mesh_;
+    std::vector<uint32_t> parent_;
+    std::unordered_map<uint32_t, std::size_t> faces_;  // by piece: few pieces, one large
+  };
 
   // Live faces of each piece of the mesh (orientation component), by its representative.
   std::unordered_map<uint32_t, std::size_t> faces_per_component() {
