@@ -41,7 +41,9 @@ class TopologyJudge {
   // population the function T is evaluated over; pass count 0 to skip T. `relaxed` skips the
   // local-plane tests (T and the normal deviation), as the loop module does on its last pass;
   // the manifold, orientation, fold and crossing tests always run. `layers_allowed` also skips
-  // the test for faces lying close over t, for the cut of a flattened bridge (handle_cut.cpp).
+  // the test for faces lying close over t: for the cut of a flattened bridge (handle_cut.cpp),
+  // and for the patches and take-ins still refused with it, which the faces across a sharp
+  // crease can overlap in projection without crossing them (loop_filler.cpp, take_in.cpp).
   Verdict judge(const Tri &t, const uint32_t *sphere, std::size_t count, bool relaxed = false,
                 bool layers_allowed = false);
   // Records a verdict in the run statistics.
