@@ -57,6 +57,9 @@ constexpr std::size_t kMaxPatchedLoop = 96;
 // rings removed in a run (each costs a pass over the mesh).
 constexpr int kMaxRings = 3;
 constexpr std::size_t kMaxWidenings = 256;
+// A spike in a hole (clear_spike_and_patch): vertices tried, and their most faces.
+constexpr std::size_t kSpikeTries = 2;
+constexpr std::size_t kMaxSpikeFaces = 6;
 // Largest piece dropped when it lies within kStrayReach spacings of another, and largest piece
 // dropped when its median edge is longer than kSparseSpacings median point spacings of the
 // cloud (drop_stray_pieces).
@@ -95,6 +98,7 @@ class LoopFiller {
       bool done = false;
       for (bool layers_allowed : {false, true})
         if (!done) done = patch_or_widen(hole, layers_allowed, widenings);
+      if (!done) done = clear_spike_and_patch(hole);
       closed += done;
     }
     return closed;
@@ -264,6 +268,61 @@ class LoopFiller {
         return true;
       }
       for (const Tri &t : removed) g_.add_face(t);  // as it was before
+    }
+    return false;
+  }
+
+  // A vertex inside the hole whose few faces reach out to points beyond it (a spike grown from
+  // a point that lay in the hole) can pierce every patch of the hole. Its faces go, the hole
+  // they leave and then the first one are patched, and the take-in places the point again;
+  // or, if a patch is refused, everything is put back. Tried for the two vertices nearest the
+  // hole's centre, within the hole's radius of it.
+  bool clear_spike_and_patch(const std::vector<uint32_t> &hole) {
+    const auto &w = g_.points.work;
+    Vec3 centre{};
+    for (uint32_t v : hole) centre = centre + w[v];
+    centre = centre * (1.0 / double(hole.size()));
+    double radius2 = 0;
+    for (uint32_t v : hole) radius2 = std::max(radius2, norm2(w[v] - centre));
+    std::vector<uint32_t> inside;
+    for (uint32_t v : hole) {
+      const uint32_t *nb = g_.nb.of(v);
+      for (unsigned j = 0; j < g_.nb.k; ++j) {
+        const uint32_t x = nb[j];
+        if (g_.mesh.is_used(x) && norm2(w[x] - centre) < radius2 &&
+            std::find(hole.begin(), hole.end(), x) == hole.end())
+          inside.push_back(x);
+      }
+    }
+    auto nearer = [&](uint32_t a, uint32_t b) {
+      const double da = norm2(w[a] - centre), db = norm2(w[b] - centre);
+      return da != db ? da < db : a < b;
+    };
+    std::sort(inside.begin(), inside.end(), nearer);
+    inside.erase(std::unique(inside.begin(), inside.end()), inside.end());
+    if (inside.size() > kSpikeTries) inside.resize(kSpikeTries);
+    for (uint32_t spike : inside) {
+      const FacesAround around = g_.mesh.faces_at(spike);
+      if (around.size() > kMaxSpikeFaces) continue;
+      const std::vector<uint32_t> faces(around.begin(), around.end());
+      std::vector<Tri> fan;
+      std::vector<uint32_t> link;
+      for (uint32_t f : faces) {
+        fan.push_back(g_.mesh.oriented(f));
+        for (uint32_t x : g_.mesh.stored(f))
+          if (x != spike) link.push_back(x);
+      }
+      for (uint32_t f : faces) g_.mesh.remove(f);
+      const std::size_t faces_before = g_.mesh.face_count(), counted = g_.stats.triangles_loops;
+      const std::vector<uint32_t> gap = loop_around(link, fan);
+      if (!gap.empty() && patch_pieces(gap, true) && patch_pieces(hole, true)) {
+        g_.stats.triangles_removed += fan.size();
+        return true;
+      }
+      for (uint32_t f = uint32_t(faces_before); f < g_.mesh.face_count(); ++f)
+        if (g_.mesh.alive(f)) g_.mesh.remove(f);
+      g_.stats.triangles_loops = counted;
+      for (const Tri &t : fan) g_.add_face(t);  // as it was
     }
     return false;
   }
