@@ -69,13 +69,6 @@ std::vector<Cycle> short_cycles(const MeshState &mesh, const std::vector<uint32_
       for (uint32_t x : mesh.stored(f))
         if (x != v && std::find(out.begin(), out.end(), x) == out.end()) out.push_back(x);
   };
-  auto is_face = [&](uint32_t u, uint32_t v, uint32_t w) {
-    for (uint32_t g : mesh.faces_at(u)) {
-      const Tri &t = mesh.stored(g);
-      if (std::count(t.begin(), t.end(), v) + std::count(t.begin(), t.end(), w) == 2) return true;
-    }
-    return false;
-  };
   for (uint32_t u : at) {
     neighbours(u, ring);
     near.clear();
@@ -88,7 +81,7 @@ std::vector<Cycle> short_cycles(const MeshState &mesh, const std::vector<uint32_
         if (x == u) continue;
         if (near.has(x)) {
           const std::array<uint32_t, 4> c{u, v, x, kNone};
-          if (v < x && !is_face(u, v, x) && edges_full(mesh, c, 3))
+          if (v < x && mesh.face_with({u, v, x}) == kNone && edges_full(mesh, c, 3))
             cycles.push_back(canonical(c, 3));
         } else if (!second.has(x)) {
           second.set(x);
@@ -122,12 +115,8 @@ class HandleCutter {
   bool cut(const Cycle &c) {
     // The mesh may have changed since the cycles were listed.
     if (!edges_full(g_.mesh, c.corners, c.n)) return false;
-    if (c.n == 3) {
-      for (uint32_t f : g_.mesh.faces_at(c.corners[0])) {
-        const Tri &t = g_.mesh.stored(f);
-        if (c.has(t[0]) && c.has(t[1]) && c.has(t[2])) return false;
-      }
-    }
+    if (c.n == 3 && g_.mesh.face_with({c.corners[0], c.corners[1], c.corners[2]}) != kNone)
+      return false;
     uint32_t fs[2];
     g_.mesh.edge_faces(c.corners[0], c.corners[1], fs);
     if (!goes_round(c, fs[0], fs[1])) return false;  // it separates

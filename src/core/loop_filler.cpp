@@ -619,10 +619,7 @@ class LoopFiller {
     const auto &w = g_.points.work;
     uint32_t fs[2];
     g_.mesh.edge_faces(u, v, fs);
-    Tri f = g_.mesh.oriented(fs[0]);
-    uint32_t z = kNone;
-    for (uint32_t x : f)
-      if (x != u && x != v) z = x;
+    const uint32_t z = third_vertex(g_.mesh.stored(fs[0]), u, v);
     Vec3 ab = normalized(w[v] - w[u]);
     Vec3 away = w[u] - w[z];
     Vec3 side = away - ab * dot(away, ab);

@@ -133,8 +133,7 @@ class Builder {
     Tri order{a, b, 0};
     if (face != kNone) {
       Tri f = g_.mesh.oriented(face);
-      for (uint32_t x : f)
-        if (x != a && x != b) opposite = x;
+      opposite = third_vertex(f, a, b);
       // The new triangle runs along ab against the existing one.
       for (int i = 0; i < 3; ++i)
         if (f[i] == a && f[(i + 1) % 3] == b) order = {b, a, 0};

@@ -102,6 +102,14 @@ class MeshState {
 
   // Faces on edge uv: 0, 1 or 2 of them, oldest first, written to out.
   int edge_faces(uint32_t u, uint32_t v, uint32_t out[2]) const;
+  // The live face with these three corners, in any order, or kNone.
+  uint32_t face_with(const Tri &t) const {
+    uint32_t fs[2];
+    const int n = edge_faces(t[0], t[1], fs);
+    for (int i = 0; i < n; ++i)
+      if (third_vertex(faces_[fs[i]].corners, t[0], t[1]) == t[2]) return fs[i];
+    return kNone;
+  }
   FacesAround faces_at(uint32_t v) const {
     const VertexFaces &a = around_[v];
     return {faces_.data(), v, a.count != 0 ? a.first : a.last, a.count};

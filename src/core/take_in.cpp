@@ -93,21 +93,10 @@ class PointTaker {
     hosts_.erase(std::unique(hosts_.begin(), hosts_.end()), hosts_.end());
   }
 
-  // The live face with these corners, or kNone.
-  uint32_t face_of(const Tri &t) const {
-    uint32_t fs[2];
-    const int n = g_.mesh.edge_faces(t[0], t[1], fs);
-    for (int i = 0; i < n; ++i) {
-      const Tri &s = g_.mesh.stored(fs[i]);
-      if (std::find(s.begin(), s.end(), t[2]) != s.end()) return fs[i];
-    }
-    return kNone;
-  }
-
   bool take(uint32_t p) {
     host_faces(p);
     for (const Host &host : hosts_) {
-      const uint32_t f = face_of(host.corners);
+      const uint32_t f = g_.mesh.face_with(host.corners);
       if (host.outside || f == kNone) continue;
       const Tri o = g_.mesh.oriented(f);
       if (replace({f}, {Tri{o[0], o[1], p}, Tri{o[1], o[2], p}, Tri{o[2], o[0], p}})) return true;
@@ -115,7 +104,7 @@ class PointTaker {
     for (const Host &host : hosts_)
       for (int i = 0; i < 3; ++i) {
         // Looked up again each time: a failed split puts the face back under a new index.
-        const uint32_t f = face_of(host.corners);
+        const uint32_t f = g_.mesh.face_with(host.corners);
         if (f == kNone) break;
         const Tri o = g_.mesh.oriented(f);
         // The edge between corners i and i + 1, in the direction f runs along it.
@@ -127,9 +116,7 @@ class PointTaker {
         uint32_t fs[2];
         if (g_.mesh.edge_faces(u, v, fs) != 2) continue;
         const uint32_t across = fs[0] == f ? fs[1] : fs[0];
-        uint32_t x = kNone;
-        for (uint32_t c : g_.mesh.stored(across))
-          if (c != u && c != v) x = c;
+        const uint32_t x = third_vertex(g_.mesh.stored(across), u, v);
         // f runs u -> v, so the consistently oriented face across runs v -> u.
         if (replace({f, across}, {Tri{u, p, w}, Tri{p, v, w}, Tri{v, p, x}, Tri{p, u, x}}))
           return true;
@@ -154,7 +141,7 @@ class PointTaker {
       faces.clear();
       corners.clear();
       for (const Tri &t : patch) {
-        const uint32_t f = face_of(t);
+        const uint32_t f = g_.mesh.face_with(t);
         if (f == kNone) return false;
         faces.push_back(f);
         corners.insert(corners.end(), t.begin(), t.end());
@@ -175,10 +162,9 @@ class PointTaker {
           fan.push_back(Tri{a, b, p});
           if (across == kNone) continue;
           const Tri &c = g_.mesh.stored(across);
-          bool opens = true;  // its third corner is new: the patch grows as a disk
-          for (uint32_t x : c)
-            if (x != a && x != b)
-              opens = std::find(corners.begin(), corners.end(), x) == corners.end();
+          // Its third corner is new: the patch grows as a disk.
+          const bool opens =
+              std::find(corners.begin(), corners.end(), third_vertex(c, a, b)) == corners.end();
           const double d2 = norm2(centroid(w[c[0]], w[c[1]], w[c[2]]) - w[p]);
           if (opens && (d2 < next_d2 || (d2 == next_d2 && across < next))) {
             next = across;
