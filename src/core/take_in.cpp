@@ -73,11 +73,11 @@ class PointTaker {
   // Faces near p, by their corners as stored (a failed attempt re-adds faces under new
   // indices): those p lies over first, nearest plane first, then those its projection misses
   // by a little, which an edge split can still reach.
-  void host_faces(uint32_t p) {
+  void host_faces(uint32_t p, double spacing) {
     const auto &w = g_.points.work;
     hosts_.clear();
     const uint32_t *nb = g_.nb.of(p);
-    const double limit = kMaxHeight * surface_spacing(p);
+    const double limit = kMaxHeight * spacing;
     for (unsigned j = 0; j < std::min(kNearbyVertices, g_.nb.k); ++j)
       for (uint32_t f : g_.mesh.faces_at(nb[j])) {
         const Tri &t = g_.mesh.stored(f);
@@ -94,7 +94,9 @@ class PointTaker {
   }
 
   bool take(uint32_t p) {
-    host_faces(p);
+    // Measured once: the splits and every star below use it.
+    const double spacing = surface_spacing(p);
+    host_faces(p, spacing);
     for (const Host &host : hosts_) {
       const uint32_t f = g_.mesh.face_with(host.corners);
       if (host.outside || f == kNone) continue;
@@ -122,7 +124,7 @@ class PointTaker {
           return true;
       }
     for (const Host &host : hosts_)
-      if (take_by_star(p, host.corners)) return true;
+      if (take_by_star(p, host.corners, spacing)) return true;
     return false;
   }
 
@@ -131,9 +133,9 @@ class PointTaker {
   // the rim and the patch stays a disk), and after each step tries the fan from p to the rim
   // in its place. Split faces are narrow or tilted where noise lifts p off its neighbours'
   // triangles; a wider fan spreads the step over more, larger triangles.
-  bool take_by_star(uint32_t p, const Tri &seed) {
+  bool take_by_star(uint32_t p, const Tri &seed, double spacing) {
     const auto &w = g_.points.work;
-    const double reach2 = std::pow(kStarReach * surface_spacing(p), 2);
+    const double reach2 = std::pow(kStarReach * spacing, 2);
     std::vector<Tri> patch{seed};  // by corners: a failed attempt re-adds faces anew
     std::vector<uint32_t> faces, corners;
     std::vector<Tri> fan;
