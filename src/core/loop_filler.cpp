@@ -56,6 +56,11 @@ constexpr std::size_t kMaxPatchedLoop = 96;
 // Rings of faces a hole may lose so that a wider hole can be patched, and the total number of
 // rings removed in a run (each costs a pass over the mesh).
 constexpr int kMaxRings = 3;
+// Rings of stars a hole is widened by at most (patch_after_clearing_stars): each ring leaves
+// its vertices to the take-in, which cannot place those standing more than a spacing off the
+// patch (at a sharp crease); a third ring closed a few more holes but left seven times the
+// points out.
+constexpr int kStarRings = 2;
 constexpr std::size_t kMaxWidenings = 256;
 // A spike in a hole (clear_spike_and_patch): vertices tried, and their most faces.
 constexpr std::size_t kSpikeTries = 2;
@@ -81,7 +86,8 @@ class LoopFiller {
   // loop that bends the surface least (hole_patch.hpp), if every triangle of it passes the
   // relaxed judgment. When the faces around the hole fold over it, they go and the wider hole
   // is patched instead; if that fails too, they are put back, and all of it is tried again
-  // without the second-layer test. Returns the holes closed.
+  // without the second-layer test; then after clearing a spike, and after clearing the whole
+  // stars of the hole's vertices. Returns the holes closed.
   std::size_t patch_open_holes() {
     collect_hole_edges();
     loops_ = trace_loops();
@@ -99,6 +105,8 @@ class LoopFiller {
       for (bool layers_allowed : {false, true})
         if (!done) done = patch_or_widen(hole, layers_allowed, widenings);
       if (!done) done = clear_spike_and_patch(hole);
+      for (bool layers_allowed : {false, true})
+        if (!done) done = patch_after_clearing_stars(hole, layers_allowed, widenings);
       closed += done;
     }
     return closed;
@@ -272,6 +280,33 @@ class LoopFiller {
     return false;
   }
 
+  // At a sharp crease the faces grown from its two sides can overlap in the wedge between them
+  // without crossing; a face that shares only a corner with the hole, so that no widening by
+  // rims removes it, then lies across every patch. The last try: every face at the hole's
+  // vertices goes (up to kStarRings times, from the wider loop each time) and the loop around
+  // them is patched; the take-in places the vertices left out again. Or all is put back.
+  bool patch_after_clearing_stars(const std::vector<uint32_t> &hole, bool layers_allowed,
+                                  std::size_t &widenings) {
+    std::vector<uint32_t> loop = hole;
+    std::vector<Tri> removed;
+    for (int ring = 0; ring < kStarRings && widenings < kMaxWidenings; ++ring) {
+      ++widenings;
+      std::vector<Tri> stars = remove_stars(loop);
+      removed.insert(removed.end(), stars.begin(), stars.end());
+      // The old loop's vertices have no faces left: the new loop runs through the stars' rims.
+      std::vector<uint32_t> corners;
+      for (const Tri &t : stars) corners.insert(corners.end(), t.begin(), t.end());
+      loop = loop_around(corners, stars);
+      if (stars.empty() || loop.empty() || loop.size() > kMaxPatchedLoop) break;
+      if (patch_pieces(loop, layers_allowed)) {
+        g_.stats.triangles_removed += removed.size();
+        return true;
+      }
+    }
+    for (const Tri &t : removed) g_.add_face(t);  // as it was before
+    return false;
+  }
+
   // A vertex inside the hole whose few faces reach out to points beyond it (a spike grown from
   // a point that lay in the hole) can pierce every patch of the hole. Its faces go, the hole
   // they leave and then the first one are patched, and the take-in places the point again;
@@ -366,6 +401,21 @@ class LoopFiller {
     if (tris.empty() || !g_.add_all_or_none(tris, layers_allowed)) return false;
     g_.stats.triangles_loops += tris.size();
     return true;
+  }
+
+  // Removes every face at the loop's vertices; returns them as they were oriented.
+  std::vector<Tri> remove_stars(const std::vector<uint32_t> &loop) {
+    std::vector<uint32_t> faces;
+    for (uint32_t v : loop)
+      for (uint32_t f : g_.mesh.faces_at(v)) faces.push_back(f);
+    std::sort(faces.begin(), faces.end());
+    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+    std::vector<Tri> stars;
+    for (uint32_t f : faces) {
+      stars.push_back(g_.mesh.oriented(f));
+      g_.mesh.remove(f);
+    }
+    return stars;
   }
 
   // Removes the faces on the loop's edges; returns them as they were oriented.

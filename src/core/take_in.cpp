@@ -46,13 +46,18 @@ class PointTaker {
 
   // Each point left out is tried with the whole judgment; those still out, again without its
   // second-layer test: beside a crease the faces across it can overlap a split in projection
-  // without crossing it.
+  // without crossing it. Each try is repeated while it takes more points in: a point whose
+  // nearest neighbours were all out (a hole's rim the loop module took away) finds faces to
+  // split only once one of them is in.
   std::size_t run() {
     std::size_t taken = 0;
     for (bool layers_allowed : {false, true}) {
       layers_allowed_ = layers_allowed;
-      for (uint32_t p = 0; p < g_.points.size(); ++p)
-        if (!g_.mesh.is_used(p) && take(p)) ++taken;
+      for (std::size_t more = 1; more > 0; taken += more) {
+        more = 0;
+        for (uint32_t p = 0; p < g_.points.size(); ++p)
+          if (!g_.mesh.is_used(p) && take(p)) ++more;
+      }
     }
     return taken;
   }

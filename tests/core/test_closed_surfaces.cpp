@@ -52,6 +52,27 @@ const Case &cube_case() {
   return c;
 }
 
+// A regular tetrahedron sampled at random: six edges of 70.5 degrees, sharper than the cube's.
+Points tetrahedron_samples(std::size_t n, std::uint64_t seed) {
+  const std::vector<double> v = {1, 1, 1, 1, -1, -1, -1, 1, -1, -1, -1, 1};
+  const std::vector<std::uint32_t> t = {0, 1, 2, 0, 3, 1, 0, 2, 3, 1, 3, 2};
+  return sample_mesh(v, t, n, seed);
+}
+
+const Case &tetrahedron_case() {
+  // Sample 6: holes along the edges that no widening by rims closed (6 boundary edges before
+  // the star widening of the last resort).
+  static const Case c = make_case("random tetrahedron samples", tetrahedron_samples(20000, 6));
+  return c;
+}
+
+const Case &tetrahedron_take_in_case() {
+  // Sample 4: one point whose neighbours were all out was left out before the take-in
+  // repeated its passes.
+  static const Case c = make_case("random tetrahedron samples, seed 4", tetrahedron_samples(20000, 4));
+  return c;
+}
+
 const Case &sphere_duplicates_case() {
   // A Fibonacci sphere with every tenth point given twice: the copies must be merged.
   Points p = fibonacci_sphere(1000);
@@ -83,6 +104,7 @@ MOA_CONTRACT_TESTS(random_sphere)
 MOA_CONTRACT_TESTS(torus_grid)
 MOA_CONTRACT_TESTS(genus2)
 MOA_CONTRACT_TESTS(genus3)
+MOA_CONTRACT_TESTS(tetrahedron)
 MOA_CONTRACT_TESTS(cube)
 MOA_CONTRACT_TESTS(sphere_duplicates)
 MOA_CONTRACT_TESTS(noisy_torus)
@@ -94,6 +116,13 @@ static void test_torus_grid_closed_genus1(void **) { MOA_EXPECT(closed_failure(t
 static void test_genus2_closed_genus2(void **) { MOA_EXPECT(closed_failure(genus2_case(), 2)); }
 static void test_genus3_closed_genus3(void **) { MOA_EXPECT(closed_failure(genus3_case(), 3)); }
 static void test_cube_closed_genus0(void **) { MOA_EXPECT(closed_failure(cube_case(), 0)); }
+// The star widening leaves a hole's vertices to the take-in, which places nearly all again.
+static void test_tetrahedron_closed_genus0(void **) {
+  MOA_EXPECT(closed_failure(tetrahedron_case(), 0, 0.999));
+}
+static void test_tetrahedron_take_in_closed_genus0(void **) {
+  MOA_EXPECT(closed_failure(tetrahedron_take_in_case(), 0));
+}
 static void test_sphere_duplicates_closed_genus0(void **) {
   MOA_EXPECT(closed_failure(sphere_duplicates_case(), 0));
 }
@@ -109,6 +138,8 @@ int main(void) {
       MOA_CONTRACT_ENTRIES(genus2),           cmocka_unit_test(test_genus2_closed_genus2),
       MOA_CONTRACT_ENTRIES(genus3),           cmocka_unit_test(test_genus3_closed_genus3),
       MOA_CONTRACT_ENTRIES(cube),             cmocka_unit_test(test_cube_closed_genus0),
+      MOA_CONTRACT_ENTRIES(tetrahedron),      cmocka_unit_test(test_tetrahedron_closed_genus0),
+      cmocka_unit_test(test_tetrahedron_take_in_closed_genus0),
       MOA_CONTRACT_ENTRIES(sphere_duplicates), cmocka_unit_test(test_sphere_duplicates_closed_genus0),
       MOA_CONTRACT_ENTRIES(noisy_torus),      cmocka_unit_test(test_noisy_torus_closed_genus1),
       MOA_CONTRACT_ENTRIES(noisy_genus2),     cmocka_unit_test(test_noisy_genus2_closed_genus2),
