@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/growth_state.hpp"
+#include "core/marks.hpp"
 
 namespace moa {
 namespace {
@@ -46,17 +47,37 @@ class PointTaker {
 
   // Each point left out is tried with the whole judgment; those still out, again without its
   // second-layer test: beside a crease the faces across it can overlap a split in projection
-  // without crossing it. Each try is repeated while it takes more points in: a point whose
-  // nearest neighbours were all out (a hole's rim the loop module took away) finds faces to
-  // split only once one of them is in.
+  // without crossing it. A point whose nearest neighbours were all out (a hole's rim the loop
+  // module took away) finds faces to split only once one of them is in: after each pass, the
+  // points still out next to one just taken in are tried again (not every point still out:
+  // on a scan with hundreds of outliers each pass re-added the faces of every failed try).
   std::size_t run() {
     std::size_t taken = 0;
+    std::vector<uint32_t> out, again;
+    IndexMarks just_in;
     for (bool layers_allowed : {false, true}) {
       layers_allowed_ = layers_allowed;
-      for (std::size_t more = 1; more > 0; taken += more) {
-        more = 0;
-        for (uint32_t p = 0; p < g_.points.size(); ++p)
-          if (!g_.mesh.is_used(p) && take(p)) ++more;
+      out.clear();
+      for (uint32_t p = 0; p < g_.points.size(); ++p)
+        if (!g_.mesh.is_used(p)) out.push_back(p);
+      while (!out.empty()) {
+        just_in.clear();
+        for (uint32_t p : out)
+          if (take(p)) just_in.set(p);
+        again.clear();
+        for (uint32_t p : out) {
+          if (g_.mesh.is_used(p)) {
+            ++taken;
+            continue;
+          }
+          const uint32_t *nb = g_.nb.of(p);
+          for (unsigned j = 0; j < std::min(kNearbyVertices, g_.nb.k); ++j)
+            if (just_in.has(nb[j])) {
+              again.push_back(p);
+              break;
+            }
+        }
+        out.swap(again);
       }
     }
     return taken;
