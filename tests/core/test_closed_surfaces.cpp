@@ -61,14 +61,14 @@ Points tetrahedron_samples(std::size_t n, std::uint64_t seed) {
 
 const Case &tetrahedron_case() {
   // Sample 6: holes along the edges that no widening by rims closed (6 boundary edges before
-  // the star widening of the last resort).
+  // the last resort cleared the stars of a hole's vertices).
   static const Case c = make_case("random tetrahedron samples", tetrahedron_samples(20000, 6));
   return c;
 }
 
 const Case &tetrahedron_take_in_case() {
-  // Sample 4: one point whose neighbours were all out was left out before the take-in
-  // repeated its passes.
+  // Sample 4: one point whose neighbours were all out stayed out before the take-in retried
+  // the points next to one it had just taken in.
   static const Case c = make_case("random tetrahedron samples, seed 4", tetrahedron_samples(20000, 4));
   return c;
 }
@@ -116,7 +116,7 @@ static void test_torus_grid_closed_genus1(void **) { MOA_EXPECT(closed_failure(t
 static void test_genus2_closed_genus2(void **) { MOA_EXPECT(closed_failure(genus2_case(), 2)); }
 static void test_genus3_closed_genus3(void **) { MOA_EXPECT(closed_failure(genus3_case(), 3)); }
 static void test_cube_closed_genus0(void **) { MOA_EXPECT(closed_failure(cube_case(), 0)); }
-// The star widening leaves a hole's vertices to the take-in, which places nearly all again.
+// Clearing a hole's stars leaves its vertices to the take-in, which places nearly all again.
 static void test_tetrahedron_closed_genus0(void **) {
   MOA_EXPECT(closed_failure(tetrahedron_case(), 0, 0.999));
 }
