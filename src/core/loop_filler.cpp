@@ -253,31 +253,14 @@ class LoopFiller {
   }
 
   // Patches the hole, or else removes up to kMaxRings rings of faces around it and patches the
-  // wider hole; puts the faces back if that fails too.
+  // wider hole; puts the faces back if that fails too. Widens first without dropping any vertex
+  // out of the mesh, then, if that fails, freely: a closed surface missing a point beats one
+  // with a hole.
   bool patch_or_widen(const std::vector<uint32_t> &hole, bool layers_allowed,
                       std::size_t &widenings) {
-    if (patch_pieces(hole, layers_allowed)) return true;
-    // Widen first without dropping any vertex out of the mesh, then, if that fails, freely:
-    // a closed surface missing a point beats one with a hole.
-    for (bool keep_vertices : {true, false}) {
-      std::vector<uint32_t> loop = hole;
-      std::vector<Tri> removed;
-      bool done = false;
-      for (int ring = 0; !done && ring < kMaxRings && widenings < kMaxWidenings; ++ring) {
-        ++widenings;
-        std::vector<Tri> rim = remove_rim(loop, keep_vertices);
-        removed.insert(removed.end(), rim.begin(), rim.end());
-        loop = loop_around(loop, rim);
-        if (rim.empty() || loop.empty() || loop.size() > kMaxPatchedLoop) break;
-        done = patch_pieces(loop, layers_allowed);
-      }
-      if (done) {
-        g_.stats.triangles_removed += removed.size();
-        return true;
-      }
-      for (const Tri &t : removed) g_.add_face(t);  // as it was before
-    }
-    return false;
+    return patch_pieces(hole, layers_allowed) ||
+           widen_and_patch(hole, Widening::KeepingVertices, kMaxRings, layers_allowed, widenings) ||
+           widen_and_patch(hole, Widening::Rims, kMaxRings, layers_allowed, widenings);
   }
 
   // At a sharp crease the faces grown from its two sides can overlap in the wedge between them
@@ -287,17 +270,34 @@ class LoopFiller {
   // them is patched; the take-in places the vertices left out again. Or all is put back.
   bool patch_after_clearing_stars(const std::vector<uint32_t> &hole, bool layers_allowed,
                                   std::size_t &widenings) {
+    return widen_and_patch(hole, Widening::Stars, kStarRings, layers_allowed, widenings);
+  }
+
+  // How a hole is widened: the faces on its edges, those a vertex needs to stay in the mesh
+  // excepted or not; or every face at its vertices.
+  enum class Widening { KeepingVertices, Rims, Stars };
+
+  // Widens the hole ring by ring (at most `rings`, within the run's budget of widenings) and
+  // patches the wider loop after each ring; on failure puts every removed face back.
+  bool widen_and_patch(const std::vector<uint32_t> &hole, Widening widening, int rings,
+                       bool layers_allowed, std::size_t &widenings) {
     std::vector<uint32_t> loop = hole;
     std::vector<Tri> removed;
-    for (int ring = 0; ring < kStarRings && widenings < kMaxWidenings; ++ring) {
+    for (int ring = 0; ring < rings && widenings < kMaxWidenings; ++ring) {
       ++widenings;
-      std::vector<Tri> stars = remove_stars(loop);
-      removed.insert(removed.end(), stars.begin(), stars.end());
-      // The old loop's vertices have no faces left: the new loop runs through the stars' rims.
-      std::vector<uint32_t> corners;
-      for (const Tri &t : stars) corners.insert(corners.end(), t.begin(), t.end());
-      loop = loop_around(corners, stars);
-      if (stars.empty() || loop.empty() || loop.size() > kMaxPatchedLoop) break;
+      const bool keep_vertices = widening == Widening::KeepingVertices;
+      const std::vector<Tri> ring_faces =
+          widening == Widening::Stars ? remove_stars(loop) : remove_rim(loop, keep_vertices);
+      removed.insert(removed.end(), ring_faces.begin(), ring_faces.end());
+      if (widening == Widening::Stars) {
+        // The old loop's vertices have no faces left: the new loop runs through the stars' rims.
+        std::vector<uint32_t> corners;
+        for (const Tri &t : ring_faces) corners.insert(corners.end(), t.begin(), t.end());
+        loop = loop_around(corners, ring_faces);
+      } else {
+        loop = loop_around(loop, ring_faces);
+      }
+      if (ring_faces.empty() || loop.empty() || loop.size() > kMaxPatchedLoop) break;
       if (patch_pieces(loop, layers_allowed)) {
         g_.stats.triangles_removed += removed.size();
         return true;

@@ -240,9 +240,10 @@ int orient2d(const Vec3 &a, const Vec3 &b, const Vec3 &c, int drop) {
   project(a, drop, au, av);
   project(b, drop, bu, bv);
   project(c, drop, cu, cv);
-  if (!in_filter_range({bu - au, cv - av, bv - av, cu - au}, 0x1p-500, 0x1p+500))
+  const double du = bu - au, dv = cv - av, ev = bv - av, eu = cu - au;
+  if (!in_filter_range({du, dv, ev, eu}, 0x1p-500, 0x1p+500))
     return orient2d_exact(au, av, bu, bv, cu, cv);
-  double l = (bu - au) * (cv - av), r = (bv - av) * (cu - au);
+  double l = du * dv, r = ev * eu;
   double det = l - r;
   double bound = kOrient2dBound * (std::fabs(l) + std::fabs(r));
   if (det > bound) return 1;
