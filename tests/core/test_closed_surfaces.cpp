@@ -97,6 +97,19 @@ const Case &noisy_genus2_case() {
   return c;
 }
 
+const Case &contour_stack_case() {
+  // A torus cut by 30 parallel planes, three points per plane gap along each cut, as CT and MRI
+  // segmentations deliver: before the spacing measured the gaps between cuts (neighbors.cpp),
+  // the spheres of segments along a cut held few points of the next cut, and 85 boundary edges
+  // stayed in 3 pieces.
+  static const Case c = [] {
+    const double axis[3] = {1, 0.3, 0.2};
+    return make_case("torus contour stack",
+                     contour_stack(torus_grid(120, 48, 1.0, 0.4), torus_grid_triangles(120, 48), axis, 30, 3, 1));
+  }();
+  return c;
+}
+
 }  // namespace
 
 MOA_CONTRACT_TESTS(fibonacci_sphere)
@@ -109,6 +122,7 @@ MOA_CONTRACT_TESTS(cube)
 MOA_CONTRACT_TESTS(sphere_duplicates)
 MOA_CONTRACT_TESTS(noisy_torus)
 MOA_CONTRACT_TESTS(noisy_genus2)
+MOA_CONTRACT_TESTS(contour_stack)
 
 static void test_fibonacci_sphere_closed_genus0(void **) { MOA_EXPECT(closed_failure(fibonacci_sphere_case(), 0)); }
 static void test_random_sphere_closed_genus0(void **) { MOA_EXPECT(closed_failure(random_sphere_case(), 0)); }
@@ -129,6 +143,7 @@ static void test_sphere_duplicates_closed_genus0(void **) {
 
 static void test_noisy_torus_closed_genus1(void **) { MOA_EXPECT(closed_failure(noisy_torus_case(), 1)); }
 static void test_noisy_genus2_closed_genus2(void **) { MOA_EXPECT(closed_failure(noisy_genus2_case(), 2)); }
+static void test_contour_stack_closed_genus1(void **) { MOA_EXPECT(closed_failure(contour_stack_case(), 1)); }
 
 int main(void) {
   const struct CMUnitTest tests[] = {
@@ -143,6 +158,7 @@ int main(void) {
       MOA_CONTRACT_ENTRIES(sphere_duplicates), cmocka_unit_test(test_sphere_duplicates_closed_genus0),
       MOA_CONTRACT_ENTRIES(noisy_torus),      cmocka_unit_test(test_noisy_torus_closed_genus1),
       MOA_CONTRACT_ENTRIES(noisy_genus2),     cmocka_unit_test(test_noisy_genus2_closed_genus2),
+      MOA_CONTRACT_ENTRIES(contour_stack),    cmocka_unit_test(test_contour_stack_closed_genus1),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

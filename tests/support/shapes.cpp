@@ -158,6 +158,17 @@ Points torus_grid(std::size_t nu, std::size_t nv, double R, double r) {
   return p;
 }
 
+std::vector<std::uint32_t> torus_grid_triangles(std::size_t nu, std::size_t nv) {
+  std::vector<std::uint32_t> t;
+  auto at = [&](std::size_t i, std::size_t j) { return std::uint32_t((j % nv) * nu + i % nu); };
+  for (std::size_t j = 0; j < nv; ++j)
+    for (std::size_t i = 0; i < nu; ++i) {
+      const std::uint32_t a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
+      t.insert(t.end(), {a, b, c, a, c, d});
+    }
+  return t;
+}
+
 Points genus_surface(int genus, double spacing, std::uint64_t seed) {
   const ToriRow row{std::clamp(genus, 1, 3)};
   Rng rng(seed);
@@ -288,6 +299,46 @@ Points sample_mesh(const std::vector<double> &v, const std::vector<std::uint32_t
     const double ka = 1 - s, kb = s * (1 - w), kc = s * w;
     const double *a = &v[3 * t[3 * f]], *b = &v[3 * t[3 * f + 1]], *c = &v[3 * t[3 * f + 2]];
     push(p, ka * a[0] + kb * b[0] + kc * c[0], ka * a[1] + kb * b[1] + kc * c[1], ka * a[2] + kb * b[2] + kc * c[2]);
+  }
+  return p;
+}
+
+Points contour_stack(const std::vector<double> &v, const std::vector<std::uint32_t> &t,
+                     const double axis[3], std::size_t slices, double per_gap, std::uint64_t seed) {
+  Rng rng(seed);
+  const double norm = std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
+  auto height = [&](std::uint32_t i) {
+    return (v[3 * i] * axis[0] + v[3 * i + 1] * axis[1] + v[3 * i + 2] * axis[2]) / norm;
+  };
+  double lo = height(0), hi = lo;
+  for (std::uint32_t i = 0; 3 * i < v.size(); ++i) lo = std::min(lo, height(i)), hi = std::max(hi, height(i));
+  const double gap = (hi - lo) / double(slices), step = gap / per_gap;
+  Points p;
+  for (std::size_t s = 0; s < slices; ++s) {
+    const double level = lo + (double(s) + 0.5) * gap;
+    for (std::size_t f = 0; f + 2 < t.size(); f += 3) {
+      // The cut through this triangle: where its edges cross the plane.
+      double ends[2][3];
+      int found = 0;
+      for (int e = 0; e < 3 && found < 2; ++e) {
+        const std::uint32_t a = t[f + e], b = t[f + (e + 1) % 3];
+        const double ha = height(a) - level, hb = height(b) - level;
+        if ((ha < 0) == (hb < 0)) continue;
+        const double w = ha / (ha - hb);
+        for (int k = 0; k < 3; ++k) ends[found][k] = v[3 * a + k] + w * (v[3 * b + k] - v[3 * a + k]);
+        ++found;
+      }
+      if (found < 2) continue;
+      const double dx = ends[1][0] - ends[0][0], dy = ends[1][1] - ends[0][1], dz = ends[1][2] - ends[0][2];
+      // On average length / step points, at random along the cut.
+      const double expected = std::sqrt(dx * dx + dy * dy + dz * dz) / step;
+      std::size_t count = std::size_t(expected);
+      if (rng.uniform() < expected - double(count)) ++count;
+      for (std::size_t c = 0; c < count; ++c) {
+        const double w = rng.uniform();
+        push(p, ends[0][0] + w * dx, ends[0][1] + w * dy, ends[0][2] + w * dz);
+      }
+    }
   }
   return p;
 }

@@ -35,6 +35,8 @@ Points ellipsoid_random(std::size_t n, double a, double b, double c, std::uint64
 // Torus about the z axis: R to the tube's centre, r the tube radius.
 Points torus_random(std::size_t n, double R, double r, std::uint64_t seed);
 Points torus_grid(std::size_t nu, std::size_t nv, double R, double r);
+// The triangles of torus_grid's points, two per grid cell, facing outward.
+std::vector<std::uint32_t> torus_grid_triangles(std::size_t nu, std::size_t nv);
 // A smooth closed surface of genus 1, 2 or 3 (tori in a row, blended where they meet), sampled
 // with minimum spacing `spacing` and no gap much wider than that.
 Points genus_surface(int genus, double spacing, std::uint64_t seed);
@@ -58,6 +60,11 @@ double bbox_diagonal(const Points &p);
 // n points uniform by area on a triangle mesh.
 Points sample_mesh(const std::vector<double> &vertices, const std::vector<std::uint32_t> &triangles,
                    std::size_t n, std::uint64_t seed);
+// A contour stack, as CT and MRI segmentations deliver: the mesh cut by `slices` parallel planes
+// (normal `axis`, evenly spaced across the mesh) and each cut sampled at random along its length,
+// `per_gap` points per plane gap on average: the points lie on lines that far apart.
+Points contour_stack(const std::vector<double> &vertices, const std::vector<std::uint32_t> &triangles,
+                     const double axis[3], std::size_t slices, double per_gap, std::uint64_t seed);
 // Greedy blue-noise thinning: keeps candidates (in order) at least min_distance from all kept.
 Points thin_points(const Points &candidates, double min_distance);
 

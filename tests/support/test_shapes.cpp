@@ -146,6 +146,26 @@ void test_noise_and_mesh_sampling(void **) {
   assert_true(upper > 850 && upper < 1150);  // equal areas above and below
 }
 
+void test_contour_stack(void **) {
+  // The octahedron |x| + |y| + |z| = 1 cut by 10 planes z = const: every point on a plane and on
+  // the surface, about per_gap points per plane gap along the cuts (squares of side sqrt 2 (1 - |z|)).
+  const std::vector<double> v = {1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1};
+  const std::vector<uint32_t> tris = {0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4, 2, 0, 5, 1, 2, 5, 3, 1, 5, 0, 3, 5};
+  const double axis[3] = {0, 0, 2};
+  const t::Points s = t::contour_stack(v, tris, axis, 10, 4, 7);
+  double length = 0;
+  for (int k = 0; k < 10; ++k) length += 4 * std::sqrt(2.0) * (1 - std::fabs(-0.9 + 0.2 * k));
+  const double expected = length / (0.2 / 4);
+  assert_true(count(s) > 0.9 * expected && count(s) < 1.1 * expected);
+  assert_false(has_duplicates(s));
+  for (size_t i = 0; i < s.size(); i += 3) {
+    const double level = (s[i + 2] + 0.9) / 0.2;
+    assert_true(std::fabs(level - std::round(level)) < 1e-9);
+    assert_true(std::fabs(std::fabs(s[i]) + std::fabs(s[i + 1]) + std::fabs(s[i + 2]) - 1) < 1e-12);
+  }
+  assert_true(t::contour_stack(v, tris, axis, 10, 4, 7) == s);  // deterministic
+}
+
 }  // namespace
 
 int main(void) {
@@ -153,7 +173,7 @@ int main(void) {
       cmocka_unit_test(test_engine_is_standard),    cmocka_unit_test(test_rng_distributions),
       cmocka_unit_test(test_generators_deterministic), cmocka_unit_test(test_points_on_surfaces),
       cmocka_unit_test(test_grid_shapes),           cmocka_unit_test(test_blue_noise_spacing),
-      cmocka_unit_test(test_noise_and_mesh_sampling),
+      cmocka_unit_test(test_noise_and_mesh_sampling), cmocka_unit_test(test_contour_stack),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
