@@ -24,29 +24,38 @@ constexpr unsigned kSpacingNeighbors = 6;
 // a cloud the spacing is at least kAcrossShare of the distance to the nearest across.
 constexpr double kAlongCos2 = 0.75;
 constexpr double kAcrossShare = 0.8;
-// The cloud counts as sampled along lines when the floor raises the spacing of at least this
-// share of its points. On an even sample it raises about 3 % (points whose nearest two or
-// three happen to line up); on contour stacks 70 to 97 %. Below the share nothing changes, so
-// that a few chance alignments do not perturb the spheres of an even sample.
+// The cloud counts as sampled along lines when at least this share of its points lie on one:
+// the floor raises their spacing, or their list holds no neighbour across. On an even sample
+// that is about 3 % (points whose nearest two or three happen to line up); on contour stacks
+// 70 to 97 %. Below the share nothing changes, so that a few chance alignments do not perturb
+// the spheres of an even sample.
 constexpr double kLinedShare = 0.25;
+// The sphere of a segment takes its points from the lists of the segment's ends, which must
+// reach a few points into the next lines. In a lined cloud whose first neighbour across comes
+// at this (0-based) rank or deeper in half of the lists, the lists are recomputed
+// kAcrossListFactor times that long, at most kMaxLinedNeighbors: a bunny stack of 60 slices
+// with 5 points per slice gap has it at rank 10, and closes with lists of 50 (with 20: 2,507
+// boundary edges in 61 pieces).
+constexpr unsigned kDeepAcrossRank = 8;
+constexpr unsigned kAcrossListFactor = 5;
+constexpr std::size_t kMaxLinedNeighbors = 96;
 
 bool across(const Vec3 &offset, const Vec3 &first) {
   const double c = dot(offset, first);
   return c * c < kAlongCos2 * norm2(offset) * norm2(first);
 }
 
-}  // namespace
-
-Neighborhood compute_neighbors(const KdIndex &index, unsigned k,
-                               const std::function<void(double)> &tick) {
+// One k-NN pass with nb.k neighbours per point: the lists, the spacing (mean distance to the
+// nearest kSpacingNeighbors) and, per point, the rank of its first neighbour across (nb.k when
+// none is) and the distance to it (0 when none is).
+void knn_pass(const KdIndex &index, Neighborhood &nb, std::vector<uint8_t> &across_rank,
+              std::vector<float> &across_gap, const std::function<void(double)> &tick) {
   const std::vector<Vec3> &p = index.points();
   const std::size_t n = p.size();
-  Neighborhood nb;
-  nb.k = unsigned(std::min<std::size_t>(k, n - 1));
-  nb.knn.resize(n * nb.k);
-  nb.spacing.resize(n);
-
-  std::vector<float> across_gap(n, 0.0f);  // distance to the nearest across; 0: none
+  nb.knn.assign(n * nb.k, 0);
+  nb.spacing.assign(n, 0.0f);
+  across_rank.assign(n, uint8_t(nb.k));
+  across_gap.assign(n, 0.0f);
   const unsigned want = nb.k + 1;  // the point itself comes back too
   const std::size_t block = 16384;
   for (std::size_t start = 0; start < n; start += block) {
@@ -73,19 +82,46 @@ Neighborhood compute_neighbors(const KdIndex &index, unsigned k,
                           for (unsigned j = 0; j < m; ++j) {
                             out[j] = list[j].second;
                             if (j < ns) sum += std::sqrt(list[j].first);
-                            if (across_gap[i] == 0 && across(p[out[j]] - p[i], first))
+                            if (across_gap[i] == 0 && across(p[out[j]] - p[i], first)) {
                               across_gap[i] = float(std::sqrt(list[j].first));
+                              across_rank[i] = uint8_t(j);
+                            }
                           }
                           nb.spacing[i] = float(sum / ns);
                         }
                       });
     tick(double(end) / double(n));
   }
-  std::size_t raised = 0;
-  for (std::size_t i = 0; i < n; ++i) raised += kAcrossShare * across_gap[i] > nb.spacing[i];
-  if (double(raised) >= kLinedShare * double(n))
-    for (std::size_t i = 0; i < n; ++i)
-      nb.spacing[i] = std::max(nb.spacing[i], float(kAcrossShare * across_gap[i]));
+}
+
+}  // namespace
+
+Neighborhood compute_neighbors(const KdIndex &index, unsigned k,
+                               const std::function<void(double)> &tick) {
+  const std::size_t n = index.points().size();
+  Neighborhood nb;
+  nb.k = unsigned(std::min<std::size_t>(k, n - 1));
+  std::vector<uint8_t> across_rank;
+  std::vector<float> across_gap;
+  knn_pass(index, nb, across_rank, across_gap, tick);
+
+  std::size_t lined = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    lined += across_gap[i] == 0 || kAcrossShare * across_gap[i] > nb.spacing[i];
+  if (double(lined) < kLinedShare * double(n)) return nb;
+  std::vector<uint8_t> ranks(across_rank);
+  std::nth_element(ranks.begin(), ranks.begin() + std::ptrdiff_t(n / 2), ranks.end());
+  const unsigned median_rank = ranks[n / 2];
+  if (median_rank >= kDeepAcrossRank) {
+    const unsigned wider = unsigned(std::min<std::size_t>(
+        {std::size_t(kAcrossListFactor * median_rank), kMaxLinedNeighbors, n - 1}));
+    if (wider > nb.k) {
+      nb.k = wider;
+      knn_pass(index, nb, across_rank, across_gap, [&](double) { tick(1.0); });
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    nb.spacing[i] = std::max(nb.spacing[i], float(kAcrossShare * across_gap[i]));
   return nb;
 }
 

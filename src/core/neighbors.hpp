@@ -13,9 +13,11 @@
 namespace moa {
 
 struct Neighborhood {
-  unsigned k = 0;
+  unsigned k = 0;               // the parameter's, or more in a cloud sampled along lines
   std::vector<uint32_t> knn;   // k per point, nearest first, the point itself excluded
-  std::vector<float> spacing;  // mean distance to the nearest few neighbours (work units)
+  std::vector<float> spacing;  // mean distance to the nearest few neighbours (work units); in
+                               // a cloud sampled along lines, at least most of the gap to the
+                               // nearest neighbour off the point's line
 
   const uint32_t *of(uint32_t i) const { return knn.data() + std::size_t(i) * k; }
 };

@@ -21,8 +21,11 @@ const ParamRow kRows[] = {
      "worker threads for the parallel stages; 0 uses every core. The mesh does not "
      "depend on it",
      0, 1024, true, &Params::threads},
-    {"neighbors", "k of the k-nearest-neighbour graph that supplies the candidate points", 8, 64,
-     true, &Params::neighbors},
+    {"neighbors",
+     "k of the k-nearest-neighbour graph that supplies the candidate points; in a cloud "
+     "sampled along lines (a CT contour stack) whose lists reach too few points of the next "
+     "lines, up to five times the rank of the first such point (at most 96)",
+     8, 64, true, &Params::neighbors},
     {"sphere_radius",
      "radius R of the candidate sphere around a target segment's midpoint, "
      "in units of the local point spacing (never less than just over half the segment)",

@@ -110,6 +110,18 @@ const Case &contour_stack_case() {
   return c;
 }
 
+const Case &fine_contour_stack_case() {
+  // Five points per plane gap: the first neighbour across a cut ranks about tenth, and with
+  // lists of 20 the spheres held too few points of the next cut (226 boundary edges in 8
+  // pieces, genus 2) before the lists of such a cloud were lengthened.
+  static const Case c = [] {
+    const double axis[3] = {1, 0.3, 0.2};
+    return make_case("torus contour stack, 5 points per gap",
+                     contour_stack(torus_grid(120, 48, 1.0, 0.4), torus_grid_triangles(120, 48), axis, 30, 5, 1));
+  }();
+  return c;
+}
+
 }  // namespace
 
 MOA_CONTRACT_TESTS(fibonacci_sphere)
@@ -123,6 +135,7 @@ MOA_CONTRACT_TESTS(sphere_duplicates)
 MOA_CONTRACT_TESTS(noisy_torus)
 MOA_CONTRACT_TESTS(noisy_genus2)
 MOA_CONTRACT_TESTS(contour_stack)
+MOA_CONTRACT_TESTS(fine_contour_stack)
 
 static void test_fibonacci_sphere_closed_genus0(void **) { MOA_EXPECT(closed_failure(fibonacci_sphere_case(), 0)); }
 static void test_random_sphere_closed_genus0(void **) { MOA_EXPECT(closed_failure(random_sphere_case(), 0)); }
@@ -144,6 +157,9 @@ static void test_sphere_duplicates_closed_genus0(void **) {
 static void test_noisy_torus_closed_genus1(void **) { MOA_EXPECT(closed_failure(noisy_torus_case(), 1)); }
 static void test_noisy_genus2_closed_genus2(void **) { MOA_EXPECT(closed_failure(noisy_genus2_case(), 2)); }
 static void test_contour_stack_closed_genus1(void **) { MOA_EXPECT(closed_failure(contour_stack_case(), 1)); }
+static void test_fine_contour_stack_closed_genus1(void **) {
+  MOA_EXPECT(closed_failure(fine_contour_stack_case(), 1));
+}
 
 int main(void) {
   const struct CMUnitTest tests[] = {
@@ -159,6 +175,7 @@ int main(void) {
       MOA_CONTRACT_ENTRIES(noisy_torus),      cmocka_unit_test(test_noisy_torus_closed_genus1),
       MOA_CONTRACT_ENTRIES(noisy_genus2),     cmocka_unit_test(test_noisy_genus2_closed_genus2),
       MOA_CONTRACT_ENTRIES(contour_stack),    cmocka_unit_test(test_contour_stack_closed_genus1),
+      MOA_CONTRACT_ENTRIES(fine_contour_stack), cmocka_unit_test(test_fine_contour_stack_closed_genus1),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
