@@ -39,6 +39,7 @@ constexpr double kLinedShare = 0.25;
 constexpr unsigned kDeepAcrossRank = 8;
 constexpr unsigned kAcrossListFactor = 5;
 constexpr std::size_t kMaxLinedNeighbors = 96;
+static_assert(kMaxLinedNeighbors < 256, "a rank must fit the byte knn_pass keeps it in");
 
 bool across(const Vec3 &offset, const Vec3 &first) {
   const double c = dot(offset, first);

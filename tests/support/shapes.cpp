@@ -311,7 +311,10 @@ Points contour_stack(const std::vector<double> &v, const std::vector<std::uint32
     return (v[3 * i] * axis[0] + v[3 * i + 1] * axis[1] + v[3 * i + 2] * axis[2]) / norm;
   };
   double lo = height(0), hi = lo;
-  for (std::uint32_t i = 0; 3 * i < v.size(); ++i) lo = std::min(lo, height(i)), hi = std::max(hi, height(i));
+  for (std::uint32_t i = 0; 3 * i < v.size(); ++i) {
+    lo = std::min(lo, height(i));
+    hi = std::max(hi, height(i));
+  }
   const double gap = (hi - lo) / double(slices), step = gap / per_gap;
   Points p;
   for (std::size_t s = 0; s < slices; ++s) {
