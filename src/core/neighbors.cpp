@@ -24,12 +24,6 @@ constexpr unsigned kSpacingNeighbors = 6;
 // a cloud the spacing is at least kAcrossShare of the distance to the nearest across.
 constexpr double kAlongCos2 = 0.75;
 constexpr double kAcrossShare = 0.8;
-// The cloud counts as sampled along lines when at least this share of its points lie on one:
-// the floor raises their spacing, or their list holds no neighbour across. On an even sample
-// that is about 3 % (points whose nearest two or three happen to line up); on contour stacks
-// 70 to 97 %. Below the share nothing changes, so that a few chance alignments do not perturb
-// the spheres of an even sample.
-constexpr double kLinedShare = 0.25;
 // The sphere of a segment takes its points from the lists of the segment's ends, which must
 // reach a few points into the next lines. In a lined cloud whose first neighbour across comes
 // at this (0-based) rank or deeper in half of the lists, the lists are recomputed
@@ -40,11 +34,6 @@ constexpr unsigned kDeepAcrossRank = 8;
 constexpr unsigned kAcrossListFactor = 5;
 constexpr std::size_t kMaxLinedNeighbors = 96;
 static_assert(kMaxLinedNeighbors < 256, "a rank must fit the byte knn_pass keeps it in");
-
-bool across(const Vec3 &offset, const Vec3 &first) {
-  const double c = dot(offset, first);
-  return c * c < kAlongCos2 * norm2(offset) * norm2(first);
-}
 
 // One k-NN pass with nb.k neighbours per point: the lists, the spacing (mean distance to the
 // nearest kSpacingNeighbors) and, per point, the rank of its first neighbour across (nb.k when
@@ -83,7 +72,7 @@ void knn_pass(const KdIndex &index, Neighborhood &nb, std::vector<uint8_t> &acro
                           for (unsigned j = 0; j < m; ++j) {
                             out[j] = list[j].second;
                             if (j < ns) sum += std::sqrt(list[j].first);
-                            if (across_gap[i] == 0 && across(p[out[j]] - p[i], first)) {
+                            if (across_gap[i] == 0 && off_line(p[out[j]] - p[i], first)) {
                               across_gap[i] = float(std::sqrt(list[j].first));
                               across_rank[i] = uint8_t(j);
                             }
@@ -107,8 +96,7 @@ Neighborhood compute_neighbors(const KdIndex &index, unsigned k,
   knn_pass(index, nb, across_rank, across_gap, tick);
 
   std::size_t lined = 0;
-  for (std::size_t i = 0; i < n; ++i)
-    lined += across_gap[i] == 0 || kAcrossShare * across_gap[i] > nb.spacing[i];
+  for (uint32_t i = 0; i < n; ++i) lined += on_a_line(index.points(), i, nb.of(i), nb.k);
   if (double(lined) < kLinedShare * double(n)) return nb;
   std::vector<uint8_t> ranks(across_rank);
   std::nth_element(ranks.begin(), ranks.begin() + std::ptrdiff_t(n / 2), ranks.end());
@@ -124,6 +112,22 @@ Neighborhood compute_neighbors(const KdIndex &index, unsigned k,
   for (std::size_t i = 0; i < n; ++i)
     nb.spacing[i] = std::max(nb.spacing[i], float(kAcrossShare * across_gap[i]));
   return nb;
+}
+
+bool off_line(const Vec3 &offset, const Vec3 &to_nearest) {
+  const double c = dot(offset, to_nearest);
+  return c * c < kAlongCos2 * norm2(offset) * norm2(to_nearest);
+}
+
+bool on_a_line(const std::vector<Vec3> &p, uint32_t i, const uint32_t *nb, unsigned m) {
+  if (m == 0) return false;
+  const Vec3 first = p[nb[0]] - p[i];
+  const unsigned ns = std::min(kSpacingNeighbors, m);
+  double spacing = 0;
+  for (unsigned j = 0; j < ns; ++j) spacing += dist(p[nb[j]], p[i]) / ns;
+  for (unsigned j = 1; j < m; ++j)
+    if (off_line(p[nb[j]] - p[i], first)) return kAcrossShare * dist(p[nb[j]], p[i]) > spacing;
+  return true;
 }
 
 double median_spacing(const Neighborhood &nb) {

@@ -28,6 +28,20 @@ struct Neighborhood {
 Neighborhood compute_neighbors(const KdIndex &index, unsigned k,
                                const std::function<void(double)> &tick);
 
+// Points sampled along lines (contour stacks, scanner stripes): whether the neighbour at
+// `offset` from a point lies off the line through the point's nearest neighbour, at
+// `to_nearest` (more than 30 degrees from it).
+bool off_line(const Vec3 &offset, const Vec3 &to_nearest);
+// A cloud is sampled along lines when at least this share of its points lie on one. On an
+// even sample about 3 % do (points whose nearest two or three happen to line up), on contour
+// stacks 70 to 97 %; below the share nothing changes, so that a few chance alignments do not
+// perturb an even sample.
+inline constexpr double kLinedShare = 0.25;
+// Whether point i lies on a line of such a cloud, given its first m neighbours nearest first:
+// none of them is off the line, or the nearest off it is farther than 1.25 times the mean
+// distance to the nearest six (the spacing's floor, 0.8 of that distance, would raise it).
+bool on_a_line(const std::vector<Vec3> &p, uint32_t i, const uint32_t *nb, unsigned m);
+
 // The median of the points' spacings (work units), never zero.
 double median_spacing(const Neighborhood &nb);
 

@@ -70,7 +70,8 @@ const ParamRow kRows[] = {
      "noisy clouds: the judgment measures its angles on a copy of the points smoothed onto "
      "local quadrics, while the vertices stay the caller's points. 0 never; 1 when the cloud "
      "looks noisy (its scatter off the local plane shrinks relative to the neighbourhood as "
-     "the neighbourhood grows, where a clean surface's curvature makes it grow); 2 always",
+     "the neighbourhood grows, where a clean surface's curvature makes it grow; or, in a "
+     "cloud sampled along lines, its lines are not plane curves); 2 always",
      0, 2, true, &Params::smoothing},
 };
 

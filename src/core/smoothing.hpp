@@ -18,7 +18,8 @@
 namespace moa {
 
 struct NoiseEstimate {
-  bool noisy = false;        // the roughness shrinks as the neighbourhood grows
+  bool noisy = false;        // the roughness shrinks as the neighbourhood grows, or the lines
+                             // of a cloud sampled along lines are not plane curves
   unsigned smoothing_k = 0;  // neighbourhood size at which the cloud looks flattest
   double small_scale = 0;    // median thickness / width at 10 or 20 points, the rougher
   double large_scale = 0;    // the same at smoothing_k points
@@ -26,7 +27,8 @@ struct NoiseEstimate {
 
 // Looks at a fixed sample of points at several neighbourhood sizes. Thickness over width grows
 // with the neighbourhood on a clean surface (curvature) and shrinks on a noisy one (the scatter
-// is the same at every size while the width grows). Deterministic.
+// is the same at every size while the width grows). In a cloud sampled along lines it also
+// looks at each line's thickness. Deterministic.
 NoiseEstimate estimate_noise(const KdIndex &index);
 
 // Each point moved onto the quadric fitted (least squares, in its PCA frame) to the ball

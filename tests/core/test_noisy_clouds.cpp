@@ -27,6 +27,14 @@ Points noisy(Points p, double fraction, std::uint64_t seed) {
   return p;
 }
 
+// A torus (a 120 x 48 grid mesh) cut by 30 planes, `per_gap` points per plane gap along each
+// cut (tests/support/shapes.hpp): points along lines three or five times closer than the lines.
+Points torus_stack(double per_gap) {
+  const double axis[3] = {1, 0.3, 0.2};
+  return contour_stack(torus_grid(120, 48, 1.0, 0.4), torus_grid_triangles(120, 48), axis, 30,
+                       per_gap, 1);
+}
+
 moa::NoiseEstimate estimate_of(const Points &p) {
   moa::PointSet points = moa::prepare_points(p.data(), p.size() / 3);
   moa::KdIndex index(points.work);
@@ -73,7 +81,8 @@ void test_clean_clouds_are_not_noisy(void **) {
   const Points clean[] = {sphere_random(3000, 1.0, 74), torus_random(4000, 1.0, 0.3, 75),
                           torus_grid(24, 8, 1.0, 0.3),   fibonacci_sphere(500),
                           cube_grid(20),                 genus_surface(2, 0.1, 76),
-                          hemisphere(1500),              flat_grid(60, 60)};
+                          hemisphere(1500),              flat_grid(60, 60),
+                          torus_stack(3),                torus_stack(5)};
   for (const Points &p : clean) {
     moa::NoiseEstimate e = estimate_of(p);
     if (e.noisy)
@@ -94,6 +103,25 @@ void test_noisy_clouds_are_noisy(void **) {
     assert_true(e.smoothing_k > 20);
   }
 }
+
+// Noise on a contour stack that the drop test misses (its neighbourhoods are as wide as the
+// gaps between cuts) but that matters next to the short steps along a cut: the cuts are no
+// longer plane curves. The drop test alone calls this stack clean.
+void test_rough_lines_are_noisy(void **) {
+  const Points p = noisy(torus_stack(3), 0.0005, 99);
+  assert_true(estimate_of(p).noisy);
+}
+
+// With five points per gap the drop test sees the noise, but only before the first smoothing
+// pass; the rough cuts still call for the next two. With one pass the stack below kept 799
+// boundary edges in 14 loops.
+
+const Case &rough_stack_case() {
+  static const Case c = make_case("noisy torus contour stack", noisy(torus_stack(5), 0.0016, 99));
+  return c;
+}
+
+void test_rough_stack_closed(void **) { MOA_EXPECT(closed_failure(rough_stack_case(), 1)); }
 
 // Smoothing moves the judgment's copy only: every smoothed point stays within a few noise
 // deviations of its raw position, and the copy is thinner than the raw cloud.
@@ -181,6 +209,7 @@ MOA_CONTRACT_TESTS(rough_cube)
 MOA_CONTRACT_TESTS(rough_sphere)
 MOA_CONTRACT_TESTS(rough_torus)
 MOA_CONTRACT_TESTS(rough_genus3)
+MOA_CONTRACT_TESTS(rough_stack)
 
 int main(void) {
   const struct CMUnitTest tests[] = {
@@ -194,11 +223,14 @@ int main(void) {
       cmocka_unit_test(test_rough_hemisphere_disk),
       cmocka_unit_test(test_rough_cube_closed),
       cmocka_unit_test(test_stray_points_left_out),
+      cmocka_unit_test(test_rough_lines_are_noisy),
+      cmocka_unit_test(test_rough_stack_closed),
       MOA_CONTRACT_ENTRIES(rough_hemisphere),
       MOA_CONTRACT_ENTRIES(rough_cube),
       MOA_CONTRACT_ENTRIES(rough_sphere),
       MOA_CONTRACT_ENTRIES(rough_torus),
       MOA_CONTRACT_ENTRIES(rough_genus3),
+      MOA_CONTRACT_ENTRIES(rough_stack),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
