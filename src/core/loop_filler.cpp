@@ -408,14 +408,7 @@ class LoopFiller {
     std::vector<uint32_t> faces;
     for (uint32_t v : loop)
       for (uint32_t f : g_.mesh.faces_at(v)) faces.push_back(f);
-    std::sort(faces.begin(), faces.end());
-    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
-    std::vector<Tri> stars;
-    for (uint32_t f : faces) {
-      stars.push_back(g_.mesh.oriented(f));
-      g_.mesh.remove(f);
-    }
-    return stars;
+    return remove_faces(faces, false);
   }
 
   // Removes the faces on the loop's edges; returns them as they were oriented.
@@ -426,20 +419,28 @@ class LoopFiller {
       uint32_t fs[2];
       if (g_.mesh.edge_faces(loop[j], loop[(j + 1) % n], fs) == 1) faces.push_back(fs[0]);
     }
+    return remove_faces(faces, keep_vertices);
+  }
+
+  // Removes the faces listed (a face may be listed twice), in index order; returns them as
+  // they were oriented. A vertex whose last face one of them is would drop out of the mesh
+  // (the patch of the wider hole spans only the loop's vertices): with keep_vertices, that
+  // face stays.
+  std::vector<Tri> remove_faces(std::vector<uint32_t> faces, bool keep_vertices) {
     std::sort(faces.begin(), faces.end());
     faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
-    std::vector<Tri> ring;
+    std::vector<Tri> removed;
     for (uint32_t f : faces) {
-      // A vertex whose last face this is would drop out of the mesh (the patch of the wider
-      // hole spans only the loop's vertices): with keep_vertices, that face stays.
       const Tri t = g_.mesh.oriented(f);
-      bool last = false;
-      for (uint32_t v : t) last |= g_.mesh.faces_at(v).size() == 1;
-      if (keep_vertices && last) continue;
-      ring.push_back(t);
+      if (keep_vertices) {
+        bool last = false;
+        for (uint32_t v : t) last |= g_.mesh.faces_at(v).size() == 1;
+        if (last) continue;
+      }
+      removed.push_back(t);
       g_.mesh.remove(f);
     }
-    return ring;
+    return removed;
   }
 
   // The loop that now runs through most of the given loop's vertices, after remove_rim took

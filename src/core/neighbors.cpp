@@ -66,18 +66,11 @@ void knn_pass(const KdIndex &index, Neighborhood &nb, std::vector<uint8_t> &acro
                           if (list.empty()) continue;  // a single point
                           uint32_t *out = nb.knn.data() + i * nb.k;
                           const unsigned m = unsigned(list.size());
-                          const unsigned ns = std::min(kSpacingNeighbors, m);
-                          const Vec3 first = p[list[0].second] - p[i];
-                          double sum = 0;
-                          for (unsigned j = 0; j < m; ++j) {
-                            out[j] = list[j].second;
-                            if (j < ns) sum += std::sqrt(list[j].first);
-                            if (across_gap[i] == 0 && off_line(p[out[j]] - p[i], first)) {
-                              across_gap[i] = float(std::sqrt(list[j].first));
-                              across_rank[i] = uint8_t(j);
-                            }
-                          }
-                          nb.spacing[i] = float(sum / ns);
+                          for (unsigned j = 0; j < m; ++j) out[j] = list[j].second;
+                          const LineMeasure line = measure_line(p, uint32_t(i), out, m);
+                          nb.spacing[i] = float(line.spacing);
+                          across_gap[i] = float(line.across_gap);
+                          across_rank[i] = uint8_t(line.across_rank);
                         }
                       });
     tick(double(end) / double(n));
@@ -96,7 +89,7 @@ Neighborhood compute_neighbors(const KdIndex &index, unsigned k,
   knn_pass(index, nb, across_rank, across_gap, tick);
 
   std::size_t lined = 0;
-  for (uint32_t i = 0; i < n; ++i) lined += on_a_line(index.points(), i, nb.of(i), nb.k);
+  for (std::size_t i = 0; i < n; ++i) lined += on_a_line(nb.spacing[i], across_gap[i]);
   if (double(lined) < kLinedShare * double(n)) return nb;
   std::vector<uint8_t> ranks(across_rank);
   std::nth_element(ranks.begin(), ranks.begin() + std::ptrdiff_t(n / 2), ranks.end());
@@ -119,15 +112,27 @@ bool off_line(const Vec3 &offset, const Vec3 &to_nearest) {
   return c * c < kAlongCos2 * norm2(offset) * norm2(to_nearest);
 }
 
-bool on_a_line(const std::vector<Vec3> &p, uint32_t i, const uint32_t *nb, unsigned m) {
-  if (m == 0) return false;
+LineMeasure measure_line(const std::vector<Vec3> &p, uint32_t i, const uint32_t *nb,
+                         unsigned m) {
+  LineMeasure line;
+  line.across_rank = m;
+  if (m == 0) return line;
   const Vec3 first = p[nb[0]] - p[i];
   const unsigned ns = std::min(kSpacingNeighbors, m);
-  double spacing = 0;
-  for (unsigned j = 0; j < ns; ++j) spacing += dist(p[nb[j]], p[i]) / ns;
-  for (unsigned j = 1; j < m; ++j)
-    if (off_line(p[nb[j]] - p[i], first)) return kAcrossShare * dist(p[nb[j]], p[i]) > spacing;
-  return true;
+  double sum = 0;
+  for (unsigned j = 0; j < m; ++j) {
+    if (j < ns) sum += dist(p[nb[j]], p[i]);
+    if (line.across_gap == 0 && off_line(p[nb[j]] - p[i], first)) {
+      line.across_gap = dist(p[nb[j]], p[i]);
+      line.across_rank = j;
+    }
+  }
+  line.spacing = sum / ns;
+  return line;
+}
+
+bool on_a_line(double spacing, double across_gap) {
+  return across_gap == 0 || kAcrossShare * across_gap > spacing;
 }
 
 double median_spacing(const Neighborhood &nb) {

@@ -37,10 +37,19 @@ bool off_line(const Vec3 &offset, const Vec3 &to_nearest);
 // stacks 70 to 97 %; below the share nothing changes, so that a few chance alignments do not
 // perturb an even sample.
 inline constexpr double kLinedShare = 0.25;
-// Whether point i lies on a line of such a cloud, given its first m neighbours nearest first:
-// none of them is off the line, or the nearest off it is farther than 1.25 times the mean
-// distance to the nearest six (the spacing's floor, 0.8 of that distance, would raise it).
-bool on_a_line(const std::vector<Vec3> &p, uint32_t i, const uint32_t *nb, unsigned m);
+// How point i sits among its first m neighbours (nearest first): the mean distance to the
+// nearest six, and the distance to and (0-based) rank of the nearest neighbour off the line
+// (0 and m when none is).
+struct LineMeasure {
+  double spacing = 0;
+  double across_gap = 0;
+  unsigned across_rank = 0;
+};
+LineMeasure measure_line(const std::vector<Vec3> &p, uint32_t i, const uint32_t *nb, unsigned m);
+// Whether a point so measured lies on a line of such a cloud: no neighbour is off the line, or
+// the nearest off it is farther than 1.25 spacings (the spacing's floor, 0.8 of that distance,
+// would raise the spacing).
+bool on_a_line(double spacing, double across_gap);
 
 // The median of the points' spacings (work units), never zero.
 double median_spacing(const Neighborhood &nb);

@@ -121,7 +121,8 @@ NoiseEstimate estimate_noise(const KdIndex &index) {
         ratios[s * kScaleCount + c] =
             flatness_ratio(pca_frame(work, uint32_t(i), others.data(), kScales[c]));
     const unsigned m = unsigned(std::min<std::size_t>(others.size(), kScales[1]));
-    if (on_a_line(work, uint32_t(i), others.data(), m)) {
+    const LineMeasure line = measure_line(work, uint32_t(i), others.data(), m);
+    if (on_a_line(line.spacing, line.across_gap)) {
       std::vector<uint32_t> along;
       const Vec3 first = work[others[0]] - work[i];
       const std::size_t probe = std::min<std::size_t>(others.size(), kLineProbe);

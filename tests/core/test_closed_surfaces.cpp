@@ -102,11 +102,7 @@ const Case &contour_stack_case() {
   // segmentations deliver: before the spacing measured the gaps between cuts (neighbors.cpp),
   // the spheres of segments along a cut held few points of the next cut, and 85 boundary edges
   // stayed in 3 pieces.
-  static const Case c = [] {
-    const double axis[3] = {1, 0.3, 0.2};
-    return make_case("torus contour stack",
-                     contour_stack(torus_grid(120, 48, 1.0, 0.4), torus_grid_triangles(120, 48), axis, 30, 3, 1));
-  }();
+  static const Case c = make_case("torus contour stack", torus_contour_stack(3));
   return c;
 }
 
@@ -114,11 +110,7 @@ const Case &fine_contour_stack_case() {
   // Five points per plane gap: the first neighbour across a cut ranks about tenth, and with
   // lists of 20 the spheres held too few points of the next cut (226 boundary edges in 8
   // pieces, genus 2) before the lists of such a cloud were lengthened.
-  static const Case c = [] {
-    const double axis[3] = {1, 0.3, 0.2};
-    return make_case("torus contour stack, 5 points per gap",
-                     contour_stack(torus_grid(120, 48, 1.0, 0.4), torus_grid_triangles(120, 48), axis, 30, 5, 1));
-  }();
+  static const Case c = make_case("torus contour stack, 5 points per gap", torus_contour_stack(5));
   return c;
 }
 

@@ -27,14 +27,6 @@ Points noisy(Points p, double fraction, std::uint64_t seed) {
   return p;
 }
 
-// A torus (a 120 x 48 grid mesh) cut by 30 planes, `per_gap` points per plane gap along each
-// cut (tests/support/shapes.hpp): points along lines three or five times closer than the lines.
-Points torus_stack(double per_gap) {
-  const double axis[3] = {1, 0.3, 0.2};
-  return contour_stack(torus_grid(120, 48, 1.0, 0.4), torus_grid_triangles(120, 48), axis, 30,
-                       per_gap, 1);
-}
-
 moa::NoiseEstimate estimate_of(const Points &p) {
   moa::PointSet points = moa::prepare_points(p.data(), p.size() / 3);
   moa::KdIndex index(points.work);
@@ -82,7 +74,7 @@ void test_clean_clouds_are_not_noisy(void **) {
                           torus_grid(24, 8, 1.0, 0.3),   fibonacci_sphere(500),
                           cube_grid(20),                 genus_surface(2, 0.1, 76),
                           hemisphere(1500),              flat_grid(60, 60),
-                          torus_stack(3),                torus_stack(5)};
+                          torus_contour_stack(3),                torus_contour_stack(5)};
   for (const Points &p : clean) {
     moa::NoiseEstimate e = estimate_of(p);
     if (e.noisy)
@@ -108,7 +100,7 @@ void test_noisy_clouds_are_noisy(void **) {
 // gaps between cuts) but that matters next to the short steps along a cut: the cuts are no
 // longer plane curves. The drop test alone calls this stack clean.
 void test_rough_lines_are_noisy(void **) {
-  const Points p = noisy(torus_stack(3), 0.0005, 99);
+  const Points p = noisy(torus_contour_stack(3), 0.0005, 99);
   assert_true(estimate_of(p).noisy);
 }
 
@@ -117,7 +109,7 @@ void test_rough_lines_are_noisy(void **) {
 // boundary edges in 14 loops.
 
 const Case &rough_stack_case() {
-  static const Case c = make_case("noisy torus contour stack", noisy(torus_stack(5), 0.0016, 99));
+  static const Case c = make_case("noisy torus contour stack", noisy(torus_contour_stack(5), 0.0016, 99));
   return c;
 }
 

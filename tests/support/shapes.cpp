@@ -346,6 +346,12 @@ Points contour_stack(const std::vector<double> &v, const std::vector<std::uint32
   return p;
 }
 
+Points torus_contour_stack(double per_gap) {
+  const double axis[3] = {1, 0.3, 0.2};
+  return contour_stack(torus_grid(120, 48, 1.0, 0.4), torus_grid_triangles(120, 48), axis, 30,
+                       per_gap, 1);
+}
+
 Points thin_points(const Points &candidates, double min_distance) {
   // Hash grid with cells of min_distance: a conflicting point lies in one of the 27 cells around.
   auto cell = [&](double x) { return static_cast<std::int64_t>(std::floor(x / min_distance)); };

@@ -65,6 +65,9 @@ Points sample_mesh(const std::vector<double> &vertices, const std::vector<std::u
 // `per_gap` points per plane gap on average: the points lie on lines that far apart.
 Points contour_stack(const std::vector<double> &vertices, const std::vector<std::uint32_t> &triangles,
                      const double axis[3], std::size_t slices, double per_gap, std::uint64_t seed);
+// The torus_grid(120, 48, 1.0, 0.4) mesh as a contour stack: 30 planes across the axis
+// (1, 0.3, 0.2), `per_gap` points per plane gap, seed 1.
+Points torus_contour_stack(double per_gap);
 // Greedy blue-noise thinning: keeps candidates (in order) at least min_distance from all kept.
 Points thin_points(const Points &candidates, double min_distance);
 
