@@ -32,10 +32,10 @@ struct NoiseEstimate {
 NoiseEstimate estimate_noise(const KdIndex &index);
 
 // Each point moved onto the quadric fitted (least squares, in its PCA frame) to the ball
-// around it that holds about k points of a surface; except where a whole region moved several
-// times farther than the cloud's median point (a thin part whose two sheets one quadric pulled
-// together): those points keep their place. Parallel over points; independent of the thread
-// count.
+// around it that holds about k points of a surface; except where whole regions moved several
+// times farther than the cloud's median point and they are thin parts (two sheets that one
+// quadric pulled together, not creases it rounded off): those points keep their place.
+// Parallel over points; independent of the thread count.
 std::vector<Vec3> smoothed_points(const KdIndex &index, unsigned k,
                                   const std::function<void(double)> &tick);
 
