@@ -99,18 +99,18 @@ Vec3 project_onto_quadric(const std::vector<Vec3> &p, uint32_t self, const uint3
 // far amid neighbours that do not). At a sharp crease they round it off, which does no harm:
 // the crease's raw points stay the vertices. At a thin part (a bunny's ear) whose two sheets
 // share one neighbourhood, a quadric through both pulls them into one, and the mesh chosen on
-// that copy has holes there. A point of a thin part was pushed halfway to the other sheet, so
-// twice its move lands on that sheet; a point at a crease was pushed into the solid, where no
-// points are. On noisy samples 26-52 % of the far-moved points of thin parts found the other
-// sheet so, 0-16 % of those at the creases of fandisk and of a cube (the most under the
-// heaviest noise). When a cloud's far-moved points find it often enough, they keep their raw
-// place in the smoothed copy. Noise heavier than half the nearest-neighbour distance (in the
-// median move) is left alone: there clusters of the noise's tail move as far as a thin part's
-// sheets, and left raw they stay out of the mesh.
+// that copy has holes there. A point of a thin part was pulled about halfway to the other
+// sheet, so two or three times its move lands on that sheet; a point at a crease was pushed
+// into the solid, where no points are. On noisy samples 24-70 % of the far-moved points of
+// thin parts found the other sheet so, 1-19 % of those at the creases of fandisk and of a cube
+// (the most under the heaviest noise). When a cloud's far-moved points find it often enough,
+// they keep their raw place in the smoothed copy. Noise heavier than half the
+// nearest-neighbour distance (in the median move) is left alone: there clusters of the
+// noise's tail move as far as a thin part's sheets, and left raw they stay out of the mesh.
 constexpr unsigned kMoveRegion = 10;     // neighbours whose moves are looked at with a point's
 constexpr double kMaxRegionMove = 2.5;   // their median move over the cloud's, at most
 constexpr double kMaxNoiseForRaw = 0.5;  // median move over median nearest distance, at most
-constexpr double kMinThinShare = 0.2;    // far-moved points that find another sheet, at least
+constexpr double kMinThinShare = 0.215;  // far-moved points that find another sheet, at least
 
 double median_nearest_distance(const KdIndex &index) {
   const std::vector<Vec3> &p = index.points();
@@ -124,6 +124,20 @@ double median_nearest_distance(const KdIndex &index) {
   return median(nearest);
 }
 
+// Whether a raw point that the smoothing moved by `push` (of length `moved`) was pulled
+// towards another sheet: a point lies two or three moves out, within half that distance (the
+// pull need not have stopped halfway).
+bool pulled_towards_other_sheet(const KdIndex &index, const Vec3 &raw, const Vec3 &push,
+                                double moved) {
+  for (double reach : {2.0, 3.0}) {
+    uint32_t other;
+    double d2;
+    index.nearest(raw + push * reach, 1, &other, &d2);
+    if (std::sqrt(d2) < 0.5 * reach * moved) return true;
+  }
+  return false;
+}
+
 void keep_raw_at_thin_parts(const KdIndex &index, std::vector<Vec3> &smooth) {
   const std::vector<Vec3> &raw = index.points();
   const std::size_t n = raw.size();
@@ -135,23 +149,21 @@ void keep_raw_at_thin_parts(const KdIndex &index, std::vector<Vec3> &smooth) {
   const unsigned k = unsigned(std::min<std::size_t>(kMoveRegion + 1, n));
   enum : uint8_t { kMovedLittle, kMovedFar, kFoundOtherSheet };
   std::vector<uint8_t> state(n, kMovedLittle);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256),
-                    [&](const tbb::blocked_range<std::size_t> &r) {
-                      std::vector<uint32_t> idx(k);
-                      std::vector<double> d2(k), around;
-                      for (std::size_t i = r.begin(); i != r.end(); ++i) {
-                        if (moved[i] <= limit) continue;  // a point that moved little stays
-                        const std::size_t got = index.nearest(raw[i], k, idx.data(), d2.data());
-                        around.clear();
-                        for (std::size_t j = 0; j < got; ++j) around.push_back(moved[idx[j]]);
-                        if (median(around) <= limit) continue;
-                        const Vec3 pushed_twice = raw[i] + (smooth[i] - raw[i]) * 2.0;
-                        uint32_t other;
-                        double other_d2;
-                        index.nearest(pushed_twice, 1, &other, &other_d2);
-                        state[i] = std::sqrt(other_d2) < moved[i] ? kFoundOtherSheet : kMovedFar;
-                      }
-                    });
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, n, 256), [&](const tbb::blocked_range<std::size_t> &r) {
+        std::vector<uint32_t> idx(k);
+        std::vector<double> d2(k), around;
+        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+          if (moved[i] <= limit) continue;  // a point that moved little stays
+          const std::size_t got = index.nearest(raw[i], k, idx.data(), d2.data());
+          around.clear();
+          for (std::size_t j = 0; j < got; ++j) around.push_back(moved[idx[j]]);
+          if (median(around) <= limit) continue;
+          state[i] = pulled_towards_other_sheet(index, raw[i], smooth[i] - raw[i], moved[i])
+                         ? kFoundOtherSheet
+                         : kMovedFar;
+        }
+      });
   std::size_t far = 0, other_sheet = 0;
   for (uint8_t s : state) {
     far += s != kMovedLittle;
