@@ -100,6 +100,7 @@ const Case &noisy_cube_sample_case() {
 }
 
 void test_noisy_cube_sample_closed(void **) {
+  MOA_EXPECT(contract_failure(noisy_cube_sample_case()));
   assert_true(noisy_cube_sample_case().run.stats.smoothing_passes >= 1);
   MOA_EXPECT(closed_failure(noisy_cube_sample_case(), 0));
 }

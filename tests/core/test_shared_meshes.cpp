@@ -2,7 +2,6 @@
 // holds and the surfaces come out closed with their true genus. Each of these once kept holes:
 // torn at sharp edges (fandisk), crumpled rims the greedy filling could not close, fronts
 // meeting across a steep bend.
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdlib>
@@ -152,16 +151,7 @@ void ball_scan_closed_unsmoothed(void **) {
 // edges in 11 loops when every smoothed point was kept).
 void grid_rounded_bunny_closed(void **) {
   const Points p = sample_of("bunny00.off", 20000, 0, 9);
-  double lo[3], hi[3];
-  for (int k = 0; k < 3; ++k) lo[k] = hi[k] = p[k];
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    lo[i % 3] = std::min(lo[i % 3], p[i]);
-    hi[i % 3] = std::max(hi[i % 3], p[i]);
-  }
-  const double step =
-      std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                (hi[2] - lo[2]) * (hi[2] - lo[2])) /
-      300.0;
+  const double step = bbox_diagonal(p) / 300.0;
   std::set<std::array<long, 3>> cells;
   Points rounded;
   for (std::size_t i = 0; i < p.size(); i += 3) {
@@ -171,6 +161,7 @@ void grid_rounded_bunny_closed(void **) {
     for (long x : c) rounded.push_back(double(x) * step);
   }
   const Case c = make_case("bunny00.off 20k rounded to a grid", rounded);
+  assert_int_equal(rounded.size() / 3, 17944);
   assert_true(c.run.stats.smoothing_passes >= 1);
   expect_watertight(c, 0);
 }
