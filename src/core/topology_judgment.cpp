@@ -16,8 +16,10 @@ const double kMaxCornerCos = std::cos(degrees_to_radians(175.0));
 // better triangle can.
 const double kMaxCornerCosRelaxed = std::cos(degrees_to_radians(179.0));
 // Steepest bend across which a triangle may join two pieces of the mesh (see
-// merges_across_a_bend).
-const double kMinMergeBendCos = std::cos(degrees_to_radians(90.0));
+// merges_across_a_bend): a right angle, with room for rounding. The faces of a box sampled on
+// a grid meet at exactly 90 degrees, and the cosine computed for that bend can come out a hair
+// below cos(90°) (itself 6e-17, not 0): such a box's faces then never joined.
+constexpr double kMinMergeBendCos = -1e-9;
 
 // A triangle whose normal is more than about 100 degrees from the mean normal of a fan it
 // joins faces backwards.
@@ -161,7 +163,7 @@ bool TopologyJudge::merges_across_a_bend(const Tri &t, const EdgeFaces &edges) {
   // sample meeting at a step would turn a whole region inside out, and the seam where it meets
   // the rest again could never close. So a joining triangle must continue both pieces smoothly:
   // with D the far corner of a neighbour across edge AB, the neighbour oriented to match t is
-  // BAD, and its normal must not turn away from t's by more than kMaxMergeBend.
+  // BAD, and its normal must not turn away from t's by more than a right angle.
   const auto &w = points_.work;
   const Vec3 nt = normalized(cross(w[t[1]] - w[t[0]], w[t[2]] - w[t[0]]));
   uint32_t first = kNone;
