@@ -17,8 +17,9 @@ const double kMaxCornerCos = std::cos(degrees_to_radians(175.0));
 const double kMaxCornerCosRelaxed = std::cos(degrees_to_radians(179.0));
 // Steepest bend across which a triangle may join two pieces of the mesh (see
 // merges_across_a_bend): a right angle, with room for rounding. The faces of a box sampled on
-// a grid meet at exactly 90 degrees, and the cosine computed for that bend can come out a hair
-// below cos(90°) (itself 6e-17, not 0): such a box's faces then never joined.
+// a grid meet at exactly 90 degrees, and the cosine computed for that bend comes out 0 or a
+// hair either side of it, while cos(90°) is 6e-17: compared with that, such a box's faces were
+// joined along some edges and not along others.
 constexpr double kMinMergeBendCos = -1e-9;
 
 // A triangle whose normal is more than about 100 degrees from the mean normal of a fan it
