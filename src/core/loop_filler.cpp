@@ -26,6 +26,7 @@ struct Loop {
   std::vector<uint32_t> vertices;  // in order; a hole edge runs from each to the next
   std::vector<uint32_t> pool;      // candidate apexes: the loop's vertices and nearby free points
   std::vector<uint32_t> outer;     // vertices of other loops next to this one, tried last
+  double hole_width = 0;           // hole_size times the mean spacing of its vertices
   bool fillable = false;
 };
 
@@ -80,6 +81,101 @@ class LoopFiller {
   std::size_t count_loops() {
     collect_hole_edges();
     return trace_loops().size();
+  }
+
+  // Two pieces that grew apart along a rim (a cylinder's cap and side, sampled on grids that
+  // meet there) can leave a strip between them one cell wide, bounded by two loops each as
+  // wide as the rim: borders by their width, though the hole is the strip. Such a pair (each
+  // vertex of either loop within the hole width of the other loop, the loops on two pieces)
+  // is closed by zipping the two loops together, if every triangle passes the judgment.
+  // Returns the strips closed.
+  std::size_t zip_parallel_loops() {
+    collect_hole_edges();
+    loops_ = trace_loops();
+    classify_and_pool();
+    std::vector<uint32_t> partner(loops_.size(), kNone);
+    for (uint32_t l = 0; l < loops_.size(); ++l)
+      if (!loops_[l].fillable) partner[l] = partner_loop(l);
+    std::size_t zipped = 0;
+    for (uint32_t l = 0; l < loops_.size(); ++l) {
+      const uint32_t p = partner[l];
+      if (p == kNone || p < l || partner[p] != l) continue;
+      const std::vector<Tri> strip = zipped_strip(loops_[l].vertices, loops_[p].vertices);
+      bool done = false;
+      for (bool layers_allowed : {false, true})
+        if (!done) done = g_.add_all_or_none(strip, layers_allowed);
+      if (done) {
+        g_.stats.triangles_loops += strip.size();
+        ++zipped;
+      }
+    }
+    return zipped;
+  }
+
+  // The loop of another piece that every vertex of loop l has among its neighbours within the
+  // hole width; kNone if there is none.
+  uint32_t partner_loop(uint32_t l) const {
+    const auto &w = g_.points.work;
+    const std::vector<uint32_t> &loop = loops_[l].vertices;
+    const double reach2 = loops_[l].hole_width * loops_[l].hole_width;
+    uint32_t fs[2];
+    g_.mesh.edge_faces(loop[1 % loop.size()], loop[0], fs);
+    const uint32_t piece = g_.mesh.component(fs[0]);
+    uint32_t partner = kNone;
+    for (uint32_t v : loop) {
+      bool beside = false;
+      const uint32_t *nb = g_.nb.of(v);
+      for (unsigned j = 0; j < g_.nb.k && !beside; ++j) {
+        const uint32_t x = nb[j];
+        if (norm2(w[x] - w[v]) > reach2) break;  // the list runs nearest first
+        const auto it = loop_of_vertex_.find(x);
+        if (it == loop_of_vertex_.end() || it->second == l) continue;
+        if (partner == kNone) {
+          const FacesAround around = g_.mesh.faces_at(x);
+          if (around.empty() || g_.mesh.component(around.front()) == piece) continue;
+          partner = it->second;
+        }
+        beside = it->second == partner;
+      }
+      if (!beside) return kNone;
+    }
+    return partner;
+  }
+
+  // The triangles of the strip between loops a and b, oriented as a's piece is: from a's first
+  // vertex and the vertex of b nearest it, each step adds the triangle whose new side across
+  // the strip is the shorter, walking along b the way that keeps beside a. The loops of two
+  // pieces facing the same way run opposite ways round the strip; where they run the same
+  // way, b's piece faces the other way and turns round when the strip joins it.
+  std::vector<Tri> zipped_strip(const std::vector<uint32_t> &a,
+                                const std::vector<uint32_t> &b) const {
+    const auto &w = g_.points.work;
+    const std::size_t n = a.size(), m = b.size();
+    std::size_t start = 0;
+    for (std::size_t j = 1; j < m; ++j)
+      if (norm2(w[b[j]] - w[a[0]]) < norm2(w[b[start]] - w[a[0]])) start = j;
+    const Vec3 &a1 = w[a[1 % n]];
+    const bool forward = norm2(w[b[(start + 1) % m]] - a1) < norm2(w[b[(start + m - 1) % m]] - a1);
+    auto b_at = [&](std::size_t steps) {
+      steps %= m;
+      return b[forward ? (start + steps) % m : (start + m - steps) % m];
+    };
+    std::vector<Tri> strip;
+    std::size_t i = 0, j = 0;  // steps taken along a and along b
+    while (i < n || j < m) {
+      const uint32_t ai = a[i % n], bj = b_at(j);
+      const uint32_t a_next = a[(i + 1) % n], b_next = b_at(j + 1);
+      const bool along_a =
+          j == m || (i < n && norm2(w[a_next] - w[bj]) <= norm2(w[ai] - w[b_next]));
+      if (along_a) {
+        strip.push_back({ai, a_next, bj});
+        ++i;
+      } else {
+        strip.push_back({b_next, bj, ai});
+        ++j;
+      }
+    }
+    return strip;
   }
 
   // The last resort: each hole still open is patched at once with the triangulation of its
@@ -605,7 +701,7 @@ class LoopFiller {
       }
       spacing /= double(n);
       const double width = loop_width(loop.vertices);
-      const double hole_width = g_.params.hole_size * spacing;
+      const double hole_width = loop.hole_width = g_.params.hole_size * spacing;
       uint32_t fs[2];
       g_.mesh.edge_faces(loop.vertices[1 % n], loop.vertices[0], fs);
       const double surface_vertices = 0.5 * double(faces_of_component[g_.mesh.component(fs[0])]);
@@ -876,6 +972,8 @@ void fill_loops(GrowthState &g, const std::function<void(double)> &tick) {
   constexpr int kPatchRounds = 3;
   for (int round = 0; round < kPatchRounds && LoopFiller(g).patch_open_holes() > 0; ++round) {
   }
+  // What stays open may be a strip between two pieces whose loops each count as a border.
+  LoopFiller(g).zip_parallel_loops();
   g.stats.triangles_removed += LoopFiller(g).drop_stray_pieces();
   // Closing holes beside a bridge across a narrow gap makes a handle of it: cut again. Before
   // the take-in, which lengthens a handle's waist when it puts a point on it, and which takes
