@@ -27,6 +27,7 @@ struct Loop {
   std::vector<uint32_t> pool;      // candidate apexes: the loop's vertices and nearby free points
   std::vector<uint32_t> outer;     // vertices of other loops next to this one, tried last
   double hole_width = 0;           // hole_size times the mean spacing of its vertices
+  uint32_t piece = kNone;          // the component of the faces along it
   bool fillable = false;
 };
 
@@ -118,9 +119,6 @@ class LoopFiller {
     const auto &w = g_.points.work;
     const std::vector<uint32_t> &loop = loops_[l].vertices;
     const double reach2 = loops_[l].hole_width * loops_[l].hole_width;
-    uint32_t fs[2];
-    g_.mesh.edge_faces(loop[1 % loop.size()], loop[0], fs);
-    const uint32_t piece = g_.mesh.component(fs[0]);
     uint32_t partner = kNone;
     for (uint32_t v : loop) {
       bool beside = false;
@@ -132,7 +130,7 @@ class LoopFiller {
         if (it == loop_of_vertex_.end() || it->second == l) continue;
         if (partner == kNone) {
           const FacesAround around = g_.mesh.faces_at(x);
-          if (around.empty() || g_.mesh.component(around.front()) == piece) continue;
+          if (around.empty() || g_.mesh.component(around.front()) == loops_[l].piece) continue;
           partner = it->second;
         }
         beside = it->second == partner;
@@ -704,7 +702,8 @@ class LoopFiller {
       const double hole_width = loop.hole_width = g_.params.hole_size * spacing;
       uint32_t fs[2];
       g_.mesh.edge_faces(loop.vertices[1 % n], loop.vertices[0], fs);
-      const double surface_vertices = 0.5 * double(faces_of_component[g_.mesh.component(fs[0])]);
+      loop.piece = g_.mesh.component(fs[0]);
+      const double surface_vertices = 0.5 * double(faces_of_component[loop.piece]);
       const bool narrow = width <= hole_width;
       const bool small = double(n) <= kSmallLoopShare * std::sqrt(surface_vertices) &&
                          width <= kSmallLoopWidths * hole_width;
