@@ -112,18 +112,6 @@ constexpr double kMaxRegionMove = 2.5;   // their median move over the cloud's, 
 constexpr double kMaxNoiseForRaw = 0.5;  // median move over median nearest distance, at most
 constexpr double kMinThinShare = 0.215;  // far-moved points that find another sheet, at least
 
-double median_nearest_distance(const KdIndex &index) {
-  const std::vector<Vec3> &p = index.points();
-  const std::size_t step = std::max<std::size_t>(1, p.size() / kNoiseSamples);
-  std::vector<double> nearest;
-  for (std::size_t i = 0; i < p.size(); i += step) {
-    uint32_t idx[2];
-    double d2[2];
-    if (index.nearest(p[i], 2, idx, d2) == 2) nearest.push_back(std::sqrt(d2[1]));
-  }
-  return median(nearest);
-}
-
 // Whether a raw point that the smoothing moved by `push` (of length `moved`) was pulled
 // towards another sheet: a point lies two or three moves out, within half that distance (the
 // pull need not have stopped halfway).
@@ -138,13 +126,15 @@ bool pulled_towards_other_sheet(const KdIndex &index, const Vec3 &raw, const Vec
   return false;
 }
 
-void keep_raw_at_thin_parts(const KdIndex &index, std::vector<Vec3> &smooth) {
+// `nearest_distance`: the median distance of a point to its nearest neighbour.
+void keep_raw_at_thin_parts(const KdIndex &index, double nearest_distance,
+                            std::vector<Vec3> &smooth) {
   const std::vector<Vec3> &raw = index.points();
   const std::size_t n = raw.size();
   std::vector<double> moved(n);
   for (std::size_t i = 0; i < n; ++i) moved[i] = dist(raw[i], smooth[i]);
   const double typical = median(moved);
-  if (typical > kMaxNoiseForRaw * median_nearest_distance(index)) return;
+  if (typical > kMaxNoiseForRaw * nearest_distance) return;
   const double limit = kMaxRegionMove * typical;
   const unsigned k = unsigned(std::min<std::size_t>(kMoveRegion + 1, n));
   enum : uint8_t { kMovedLittle, kMovedFar, kFoundOtherSheet };
@@ -248,6 +238,10 @@ std::vector<Vec3> smoothed_points(const KdIndex &index, unsigned k,
   k = unsigned(std::min<std::size_t>(k, n - 1));
   const unsigned probe = std::min(kProbeNeighbors, k);
   std::vector<Vec3> out(n);
+  // Nearest-neighbour distances of every step-th point, which the search below finds anyway,
+  // for keep_raw_at_thin_parts (-1 until found).
+  const std::size_t step = std::max<std::size_t>(1, n / kNoiseSamples);
+  std::vector<double> nearest((n + step - 1) / step, -1.0);
   const std::size_t block = 16384;
   for (std::size_t start = 0; start < n; start += block) {
     const std::size_t end = std::min(n, start + block);
@@ -261,6 +255,7 @@ std::vector<Vec3> smoothed_points(const KdIndex &index, unsigned k,
             // A k-NN query for hundreds of points costs k^2 in nanoflann; the ball that holds
             // about k points of a surface, sized from the nearest few, costs k.
             std::size_t got = index.nearest(work[i], probe + 1, idx.data(), d2.data());
+            if (i % step == 0 && got >= 2) nearest[i / step] = std::sqrt(d2[1]);
             const double radius2 = d2[got - 1] * double(k) / double(got - 1);
             index.within(work[i], radius2, found);
             // A thick noisy shell holds more than k points in that ball: every s-th will do.
@@ -274,7 +269,8 @@ std::vector<Vec3> smoothed_points(const KdIndex &index, unsigned k,
         });
     tick(double(end) / double(n));
   }
-  keep_raw_at_thin_parts(index, out);
+  nearest.erase(std::remove(nearest.begin(), nearest.end(), -1.0), nearest.end());
+  keep_raw_at_thin_parts(index, median(nearest), out);
   return out;
 }
 
