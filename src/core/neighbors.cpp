@@ -35,6 +35,68 @@ constexpr unsigned kAcrossListFactor = 5;
 constexpr std::size_t kMaxLinedNeighbors = 96;
 static_assert(kMaxLinedNeighbors < 256, "a rank must fit the byte knn_pass keeps it in");
 
+// Thin walls (a plate, a pipe two or three spacings thick): the far sheet fills a quarter of
+// a point's list, whose thickness then rivals its width, and the list's fitted "normal" may lie
+// in the wall. There the nearest kNearPlaneNeighbors, on the point's own sheet, give the plane.
+// A list counts as distorted so when its smallest spread exceeds kThickList of the middle one
+// (a clean surface gives a few percent, a right-angled crease about 0.28), and the nearest give
+// a clean plane (not a line) at least 30 degrees from the list's, with every other neighbour
+// off that plane on one side of it at about one height: a second sheet parallel to the first.
+// At a crease or a sharp edge the far face rises steadily from the near one instead.
+constexpr unsigned kNearPlaneNeighbors = 10;
+constexpr double kThickList = 0.3;
+constexpr double kCleanPlane = 0.05;      // smallest spread over the middle one, at most
+constexpr double kNotALine = 0.1;         // middle spread over the largest, at least
+constexpr double kSameNormalCos2 = 0.75;  // cos^2 30
+constexpr double kOffPlaneSin2 = 0.25;    // sin^2 30: farther off the plane is on the far sheet
+constexpr double kParallelSheet = 0.6;    // lowest over highest height off the plane, at least
+// The nearest neighbours' plane serves only in a cloud of thin walls, where at least this share
+// of the points see a far sheet so (8-26 % on plates, pipes and bowls two to three spacings
+// thick). On other clouds 0-2 % do, at a thin flap or where a coarse sample's neighbours happen
+// to line up; their few changed normals changed nothing on average but which meshes of a
+// family of coarse samples came out closed.
+constexpr double kThinWallShare = 0.05;
+constexpr std::size_t kThinWallSamples = 2000;
+
+// Point i's plane, when its list is distorted by a far sheet: the normal of its nearest.
+bool near_sheet_normal(const std::vector<Vec3> &p, uint32_t i, const uint32_t *list, unsigned k,
+                       const PcaFrame &all, Vec3 &normal) {
+  if (k <= kNearPlaneNeighbors || !(all.spread[0] > kThickList * all.spread[1])) return false;
+  const PcaFrame nearest = pca_frame(p, i, list, kNearPlaneNeighbors);
+  const Vec3 &n = nearest.axis[0];
+  const double agree = dot(all.axis[0], n);
+  if (!(nearest.spread[0] < kCleanPlane * nearest.spread[1]) ||
+      !(nearest.spread[1] > kNotALine * nearest.spread[2]) || agree * agree > kSameNormalCos2)
+    return false;
+  double low = 0, high = 0;
+  int side = 0, off = 0;
+  for (unsigned j = 0; j < k; ++j) {
+    const Vec3 d = p[list[j]] - p[i];
+    const double h = dot(d, n);
+    if (h * h <= kOffPlaneSin2 * norm2(d)) continue;
+    if (side != 0 && (h > 0 ? 1 : -1) != side) return false;
+    side = h > 0 ? 1 : -1;
+    low = off == 0 ? std::fabs(h) : std::min(low, std::fabs(h));
+    high = std::max(high, std::fabs(h));
+    ++off;
+  }
+  if (off < 2 || low < kParallelSheet * high) return false;
+  normal = n;
+  return true;
+}
+
+// Whether enough of an even sample of the points see a far sheet.
+bool has_thin_walls(const std::vector<Vec3> &p, const Neighborhood &nb) {
+  const std::size_t n = p.size(), step = std::max<std::size_t>(1, n / kThinWallSamples);
+  std::size_t seen = 0, sampled = 0;
+  Vec3 normal;
+  for (std::size_t i = 0; i < n; i += step, ++sampled) {
+    const PcaFrame all = pca_frame(p, uint32_t(i), nb.of(uint32_t(i)), nb.k);
+    seen += near_sheet_normal(p, uint32_t(i), nb.of(uint32_t(i)), nb.k, all, normal);
+  }
+  return double(seen) >= kThinWallShare * double(sampled);
+}
+
 // One k-NN pass with nb.k neighbours per point: the lists, the spacing (mean distance to the
 // nearest kSpacingNeighbors) and, per point, the rank of its first neighbour across (nb.k when
 // none is) and the distance to it (0 when none is).
@@ -90,7 +152,11 @@ Neighborhood compute_neighbors(const KdIndex &index, unsigned k,
 
   std::size_t lined = 0;
   for (std::size_t i = 0; i < n; ++i) lined += on_a_line(nb.spacing[i], across_gap[i]);
-  if (double(lined) < kLinedShare * double(n)) return nb;
+  if (double(lined) < kLinedShare * double(n)) {
+    // Only here: in a cloud sampled along lines a point's nearest lie on a line, not a plane.
+    nb.thin_walls = has_thin_walls(index.points(), nb);
+    return nb;
+  }
   std::vector<uint8_t> ranks(across_rank);
   std::nth_element(ranks.begin(), ranks.begin() + std::ptrdiff_t(n / 2), ranks.end());
   const unsigned median_rank = ranks[n / 2];
@@ -142,7 +208,11 @@ double median_spacing(const Neighborhood &nb) {
 }
 
 Vec3 plane_normal(const PointSet &points, const Neighborhood &nb, uint32_t i) {
-  return pca_frame(points.work, i, nb.of(i), nb.k).axis[0];
+  const PcaFrame all = pca_frame(points.work, i, nb.of(i), nb.k);
+  Vec3 normal;
+  if (nb.thin_walls && near_sheet_normal(points.work, i, nb.of(i), nb.k, all, normal))
+    return normal;
+  return all.axis[0];
 }
 
 }  // namespace moa

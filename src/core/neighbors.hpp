@@ -18,6 +18,8 @@ struct Neighborhood {
   std::vector<float> spacing;  // mean distance to the nearest few neighbours (work units); in
                                // a cloud sampled along lines, at least most of the gap to the
                                // nearest neighbour off the point's line
+  bool thin_walls = false;     // the cloud's walls are two or three spacings thick: local
+                               // planes look past the far sheet (plane_normal)
 
   const uint32_t *of(uint32_t i) const { return knn.data() + std::size_t(i) * k; }
 };
@@ -54,7 +56,8 @@ bool on_a_line(double spacing, double across_gap);
 // The median of the points' spacings (work units), never zero.
 double median_spacing(const Neighborhood &nb);
 
-// Unit normal of the least-squares plane through point i and its k neighbours, unoriented.
+// Unit normal of the least-squares plane through point i and its k neighbours, unoriented; in
+// a cloud of thin walls, through its nearest few when the rest lie on the wall's far sheet.
 // Computed when asked (the judgment caches it) rather than stored: 24 bytes per point.
 Vec3 plane_normal(const PointSet &points, const Neighborhood &nb, uint32_t i);
 

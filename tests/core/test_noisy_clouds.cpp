@@ -3,6 +3,7 @@
 // genus (or as one disk, for an open patch), every point a vertex and the contract held on the
 // caller's coordinates.
 #include "core/kd_tree.hpp"
+#include "core/neighbors.hpp"
 #include "core/point_set.hpp"
 #include "core/smoothing.hpp"
 #include "core_harness.hpp"
@@ -106,18 +107,38 @@ void test_noisy_cube_sample_closed(void **) {
 }
 
 void test_clean_clouds_are_not_noisy(void **) {
-  // Curvature, coarse sampling, sharp edges and grid ties, but no scatter.
+  // Curvature, coarse sampling, sharp edges, grid ties and thin walls, but no scatter.
   const Points clean[] = {sphere_random(3000, 1.0, 74), torus_random(4000, 1.0, 0.3, 75),
                           torus_grid(24, 8, 1.0, 0.3),   fibonacci_sphere(500),
                           cube_grid(20),                 genus_surface(2, 0.1, 76),
                           hemisphere(1500),              flat_grid(60, 60),
-                          torus_contour_stack(3),                torus_contour_stack(5)};
+                          torus_contour_stack(3),                torus_contour_stack(5),
+                          // Thin walls: a far sheet within 20 neighbours, not within 10.
+                          plate_samples(1.0, 0.022, 20000, 22),
+                          pipe_samples(0.07, 1.0, 12000, 23)};
   for (const Points &p : clean) {
     moa::NoiseEstimate e = estimate_of(p);
     if (e.noisy)
       fail_msg("a clean cloud of %zu points looked noisy: thickness/width %.3f at 10-20 points, "
                "%.3f at %u", p.size() / 3, e.small_scale, e.large_scale, e.smoothing_k);
   }
+}
+
+// The far-sheet rule for local planes (neighbors.cpp) is for clouds of thin walls only.
+void test_thin_walls_seen_only_on_thin_walls(void **) {
+  auto thin_walls = [](const Points &p) {
+    moa::PointSet points = moa::prepare_points(p.data(), p.size() / 3);
+    moa::KdIndex index(points.work);
+    return moa::compute_neighbors(index, 20, [](double) {}).thin_walls;
+  };
+  assert_true(thin_walls(plate_samples(1.0, 0.022, 20000, 22)));
+  assert_true(thin_walls(pipe_samples(0.07, 1.0, 12000, 23)));
+  const Points others[] = {sphere_random(3000, 1.0, 74), torus_random(4000, 1.0, 0.3, 75),
+                           cube_grid(20), genus_surface(3, 0.05, 73),
+                           ellipsoid_random(8000, 1.0, 1.0, 0.15, 5), flat_grid(60, 60)};
+  for (const Points &p : others)
+    if (thin_walls(p))
+      fail_msg("a cloud of %zu points without thin walls was said to have them", p.size() / 3);
 }
 
 void test_noisy_clouds_are_noisy(void **) {
@@ -244,6 +265,7 @@ MOA_CONTRACT_TESTS(rough_flat_ellipsoid)
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_clean_clouds_are_not_noisy),
+      cmocka_unit_test(test_thin_walls_seen_only_on_thin_walls),
       cmocka_unit_test(test_noisy_clouds_are_noisy),
       cmocka_unit_test(test_smoothing_thins_the_cloud),
       cmocka_unit_test(test_smoothing_reported),

@@ -241,6 +241,38 @@ Points saddle(double spacing, std::uint64_t seed) {
   return thin_points(candidates, spacing);  // in 3-D, so steep parts are not under-sampled
 }
 
+Points plate_samples(double side, double thickness, std::size_t n, std::uint64_t seed) {
+  std::vector<double> v;
+  for (int i = 0; i < 8; ++i)
+    v.insert(v.end(), {(i & 1) ? side : 0.0, (i & 2) ? side : 0.0, (i & 4) ? thickness : 0.0});
+  const std::vector<std::uint32_t> t = {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4,
+                                        2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
+  return sample_mesh(v, t, n, seed);
+}
+
+Points pipe_samples(double thickness, double length, std::size_t n, std::uint64_t seed) {
+  const std::uint32_t m = 96;
+  const double pi = 3.14159265358979323846;
+  std::vector<double> v;
+  for (std::uint32_t i = 0; i < m; ++i) {  // per step: outer and inner, at both ends
+    const double a = 2 * pi * double(i) / double(m), c = std::cos(a), s = std::sin(a);
+    for (double r : {1.0, 1.0 - thickness})
+      for (double z : {0.0, length}) v.insert(v.end(), {r * c, r * s, z});
+  }
+  std::vector<std::uint32_t> t;
+  auto quad = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
+    t.insert(t.end(), {a, b, c, a, c, d});
+  };
+  for (std::uint32_t i = 0; i < m; ++i) {
+    const std::uint32_t p = 4 * i, q = 4 * ((i + 1) % m);  // outer 0 / L, inner 0 / L
+    quad(p, q, q + 1, p + 1);          // outer wall
+    quad(p + 2, p + 3, q + 3, q + 2);  // inner wall
+    quad(p, p + 2, q + 2, q);          // end at 0
+    quad(p + 1, q + 1, q + 3, p + 3);  // end at length
+  }
+  return sample_mesh(v, t, n, seed);
+}
+
 Points parallel_sheets(double side, double spacing, double gap, std::uint64_t seed) {
   Rng rng(seed);
   Points p = blue_noise_square(side, spacing, rng);

@@ -53,6 +53,11 @@ Points saddle(double spacing, std::uint64_t seed);
 // Two blue-noise sheets over [0,side]^2 at z = 0 and z = gap (gap below the spacing).
 Points parallel_sheets(double side, double spacing, double gap, std::uint64_t seed);
 
+// Thin walls sampled uniformly (sample_mesh): a box side x side x thickness, and a pipe of outer
+// radius 1 (a 96-sided prism with a prism-shaped hole, closed at both ends by rings; genus 1).
+Points plate_samples(double side, double thickness, std::size_t n, std::uint64_t seed);
+Points pipe_samples(double thickness, double length, std::size_t n, std::uint64_t seed);
+
 // Helpers.
 void add_noise(Points &p, double fraction_of_diagonal, std::uint64_t seed);
 void shuffle(Points &p, std::uint64_t seed);
