@@ -53,8 +53,9 @@ constexpr double kParallelSheet = 0.6;    // lowest over highest height off the 
 // The nearest neighbours' plane serves only in a cloud of thin walls, where at least this share
 // of the points see a far sheet so (8-26 % on plates, pipes and bowls two to three spacings
 // thick). On other clouds 0-2 % do, at a thin flap or where a coarse sample's neighbours happen
-// to line up; their few changed normals changed nothing on average but which meshes of a
-// family of coarse samples came out closed.
+// to line up; there the few changed normals mostly changed which samples of a family closed
+// (57 of 72 coarse samples of four shapes closed with their genus with the rule everywhere,
+// 58 without).
 constexpr double kThinWallShare = 0.05;
 constexpr std::size_t kThinWallSamples = 2000;
 
