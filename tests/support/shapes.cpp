@@ -252,10 +252,9 @@ Points plate_samples(double side, double thickness, std::size_t n, std::uint64_t
 
 Points pipe_samples(double thickness, double length, std::size_t n, std::uint64_t seed) {
   const std::uint32_t m = 96;
-  const double pi = 3.14159265358979323846;
   std::vector<double> v;
   for (std::uint32_t i = 0; i < m; ++i) {  // per step: outer and inner, at both ends
-    const double a = 2 * pi * double(i) / double(m), c = std::cos(a), s = std::sin(a);
+    const double a = 2 * k_pi * double(i) / double(m), c = std::cos(a), s = std::sin(a);
     for (double r : {1.0, 1.0 - thickness})
       for (double z : {0.0, length}) v.insert(v.end(), {r * c, r * s, z});
   }
