@@ -28,6 +28,12 @@ constexpr int kMaxCellsPerFace = 64;
 // paid equals the price, which never costs more than twice the better choice. With this rule
 // building.ply's run rebuilds 28 times instead of 114.
 constexpr double kScansPerBuiltFace = 16;
+// Removed faces stay in the mesh's records. The scene reads those records in place while few of
+// them are removed; when more than this share are (the loop module's widenings and retries
+// remove about as many faces as they add), it is built from a compact copy of the live faces
+// instead, or every query wades through the dead ones: on cow's 2,904 vertices 80 % of the
+// faces the queries proposed had been removed.
+constexpr double kMaxDeadShare = 0.25;
 
 struct CollectContext {
   RTCIntersectContext base;  // first member: Embree hands this pointer back to the filter
@@ -100,6 +106,8 @@ void CrossingIndex::release() {
   tested_.release();
   std::vector<uint32_t>().swap(found_);
   std::vector<uint32_t>().swap(oversized_);
+  std::vector<uint32_t>().swap(scene_corners_);
+  std::vector<uint32_t>().swap(scene_faces_);
   grid_ = {};
 }
 
@@ -143,12 +151,33 @@ void CrossingIndex::rebuild(MeshState &mesh) {
   rtcSetSharedGeometryBuffer(geom.get(), RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                              vertices_.data(), 0, 3 * sizeof(float), points_.size());
   // Embree reads the mesh's own face records rather than a copy (removed faces included: every
-  // query skips them), so the index costs no memory; face_added rebuilds if they move.
+  // query skips them), so the index costs no memory; face_added rebuilds if they move. Past
+  // kMaxDeadShare removed faces, the scene holds a copy of the live ones instead.
   const std::size_t count = mesh.face_count();
-  shared_records_ = mesh.records();
-  rtcSetSharedGeometryBuffer(geom.get(), RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                             shared_records_, offsetof(FaceRecord, corners), sizeof(FaceRecord),
-                             count);
+  std::size_t live = 0;
+  for (uint32_t f = 0; f < count; ++f) live += mesh.alive(f);
+  scene_corners_.clear();
+  scene_faces_.clear();
+  if (double(count - live) > kMaxDeadShare * double(count)) {
+    shared_records_ = nullptr;
+    scene_corners_.reserve(3 * live);
+    scene_faces_.reserve(live);
+    for (uint32_t f = 0; f < count; ++f) {
+      if (!mesh.alive(f)) continue;
+      const Tri &t = mesh.stored(f);
+      scene_corners_.insert(scene_corners_.end(), t.begin(), t.end());
+      scene_faces_.push_back(f);
+    }
+    rtcSetSharedGeometryBuffer(geom.get(), RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                               scene_corners_.data(), 0, 3 * sizeof(uint32_t), live);
+  } else {
+    std::vector<uint32_t>().swap(scene_corners_);
+    std::vector<uint32_t>().swap(scene_faces_);
+    shared_records_ = mesh.records();
+    rtcSetSharedGeometryBuffer(geom.get(), RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                               shared_records_, offsetof(FaceRecord, corners), sizeof(FaceRecord),
+                               count);
+  }
   rtcCommitGeometry(geom.get());
   rtcAttachGeometry(scene.get(), geom.get());
   geom.reset();  // the scene holds it now
@@ -156,6 +185,7 @@ void CrossingIndex::rebuild(MeshState &mesh) {
   if (rtcGetDeviceError(device) != RTC_ERROR_NONE) throw std::bad_alloc();
   scene_ = scene.release();
   committed_ = uint32_t(count);
+  removed_at_build_ = mesh.removed_count();
   scan_debt_ = 0;
   grid_.clear();
   oversized_.clear();
@@ -164,9 +194,12 @@ void CrossingIndex::rebuild(MeshState &mesh) {
 
 void CrossingIndex::face_added(uint32_t f, MeshState &mesh) {
   grid_insert(f, mesh.stored(f));
-  std::size_t pending = mesh.face_count() - committed_;
-  if (pending > std::max<std::size_t>(4096, committed_ / 2) ||
-      (scene_ && mesh.records() != shared_records_))
+  // Faces removed since the build count too: the scene still holds them, and the queries
+  // wade through them (the loop module removes about as many faces as it adds).
+  const std::size_t pending = mesh.face_count() - committed_;
+  const std::size_t removed = mesh.removed_count() - removed_at_build_;
+  if (pending + removed > std::max<std::size_t>(4096, committed_ / 2) ||
+      (scene_ && shared_records_ && mesh.records() != shared_records_))
     rebuild(mesh);
 }
 
@@ -181,6 +214,23 @@ bool CrossingIndex::test_exact(const Tri &t, uint32_t f, MeshState &mesh) {
 }
 
 void CrossingIndex::next_query() { tested_.clear(); }
+
+template <class Visit>
+bool CrossingIndex::visit_live(std::vector<uint32_t> &faces, const MeshState &mesh, Visit &visit) {
+  // Removed faces leave the list as they are met (the loop module removes about as many faces
+  // as it adds, and they would be met again by every later query); the order does not matter.
+  for (std::size_t i = 0; i < faces.size();) {
+    const uint32_t f = faces[i];
+    if (!mesh.alive(f)) {
+      faces[i] = faces.back();
+      faces.pop_back();
+      continue;
+    }
+    if (visit(f)) return true;
+    ++i;
+  }
+  return false;
+}
 
 template <class Visit>
 bool CrossingIndex::visit_near(const Vec3 &lo, const Vec3 &hi, MeshState &mesh, Visit &&visit) {
@@ -205,8 +255,8 @@ bool CrossingIndex::visit_near(const Vec3 &lo, const Vec3 &hi, MeshState &mesh, 
     RTCPointQueryContext pctx;
     rtcInitPointQueryContext(&pctx);
     rtcPointQuery(static_cast<RTCScene>(scene_), &pq, &pctx, collect_point_query, &found_);
-    for (uint32_t f : found_)
-      if (visit(f)) return true;
+    for (uint32_t prim : found_)
+      if (visit(face_of(prim))) return true;
   }
   // Pending faces: the grid cells the box touches.
   if (huge) {
@@ -221,13 +271,9 @@ bool CrossingIndex::visit_near(const Vec3 &lo, const Vec3 &hi, MeshState &mesh, 
     for (int64_t y = y0; y <= y1; ++y)
       for (int64_t z = z0; z <= z1; ++z) {
         auto it = grid_.find(cell_key(x, y, z));
-        if (it == grid_.end()) continue;
-        for (uint32_t f : it->second)
-          if (visit(f)) return true;
+        if (it != grid_.end() && visit_live(it->second, mesh, visit)) return true;
       }
-  for (uint32_t f : oversized_)
-    if (visit(f)) return true;
-  return false;
+  return visit_live(oversized_, mesh, visit);
 }
 
 bool CrossingIndex::crosses(const Tri &t, double pad, MeshState &mesh,
@@ -273,7 +319,8 @@ bool CrossingIndex::crosses(const Tri &t, double pad, MeshState &mesh,
       rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
       rtcIntersect1(scene, &cc.base, &rh);
     }
-    for (uint32_t f : found_) {
+    for (uint32_t prim : found_) {
+      const uint32_t f = face_of(prim);
       if (!tested_.has(f) && mesh.alive(f)) near.push_back(f);
       if (test_exact(t, f, mesh)) return true;
     }
@@ -304,7 +351,8 @@ bool CrossingIndex::crosses(const Tri &t, double pad, MeshState &mesh,
 }
 
 std::size_t CrossingIndex::memory_bytes() const {
-  std::size_t bytes = vertices_.capacity() * sizeof(float) + tested_.memory_bytes();
+  std::size_t bytes = vertices_.capacity() * sizeof(float) + tested_.memory_bytes() +
+                      (scene_corners_.capacity() + scene_faces_.capacity()) * sizeof(uint32_t);
   // Embree's BVH: about 36 bytes per committed triangle at medium quality, compact.
   bytes += std::size_t(committed_) * 36;
   for (const auto &cell : grid_) bytes += 48 + cell.second.capacity() * 4;

@@ -2,6 +2,8 @@
 // Embree. Layout of the index as the mesh grows:
 //   - a committed Embree scene (BVH) over the bulk of the faces, rebuilt when the faces added
 //     since the last build outnumber half of those in it, so rebuilds cost O(F log F) in all;
+//     it reads the mesh's face records in place, or a compact copy of the live faces once many
+//     have been removed;
 //   - a hash grid over the faces added since the last build.
 // Embree is the broad phase only: every face it proposes is decided by the exact predicates on
 // the caller's coordinates, so float rounding inside Embree can never let a crossing through.
@@ -42,10 +44,15 @@ class CrossingIndex {
 
  private:
   void rebuild(MeshState &mesh);
+  // The face behind an Embree primitive of the committed scene.
+  uint32_t face_of(uint32_t prim) const { return scene_faces_.empty() ? prim : scene_faces_[prim]; }
   void grid_insert(uint32_t f, const Tri &t);
   bool test_exact(const Tri &t, uint32_t f, MeshState &mesh);
   void bounds(const Tri &t, Vec3 &lo, Vec3 &hi) const;
   void next_query();
+  // Calls visit(face) for the live faces of a grid cell or list, dropping the removed ones.
+  template <class Visit>
+  bool visit_live(std::vector<uint32_t> &faces, const MeshState &mesh, Visit &visit);
   // Calls visit(face) for committed faces near the sphere and pending faces near the box.
   template <class Visit>
   bool visit_near(const Vec3 &lo, const Vec3 &hi, MeshState &mesh, Visit &&visit);
@@ -55,7 +62,10 @@ class CrossingIndex {
   void *device_ = nullptr;
   void *scene_ = nullptr;
   uint32_t committed_ = 0;                      // faces [0, committed_) are in the scene
+  std::size_t removed_at_build_ = 0;            // the mesh's removed_count() then
   const FaceRecord *shared_records_ = nullptr;  // the mesh's faces as the scene reads them
+  std::vector<uint32_t> scene_corners_;  // or else the live faces' corners, when compacted,
+  std::vector<uint32_t> scene_faces_;    // and the face of each of the scene's primitives
   double cell_ = 0;
   std::unordered_map<uint64_t, std::vector<uint32_t>> grid_;
   std::vector<uint32_t> oversized_;  // pending faces spanning too many cells

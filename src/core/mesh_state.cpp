@@ -192,6 +192,7 @@ uint32_t MeshState::add(const Tri &t) {
 void MeshState::remove(uint32_t f) {
   if (!alive_[f]) return;
   alive_[f] = 0;
+  ++removed_;
   const Tri t = faces_[f].corners;
   for (uint32_t v : t) unlink(f, v);
   for (int i = 0; i < 3; ++i) {

@@ -87,6 +87,8 @@ class MeshState {
   // Faces ever added, removed ones included; check alive() when iterating.
   std::size_t face_count() const { return faces_.size(); }
   bool alive(uint32_t f) const { return alive_[f] != 0; }
+  // Faces removed so far.
+  std::size_t removed_count() const { return removed_; }
   const Tri &stored(uint32_t f) const { return faces_[f].corners; }
   // Every face ever added, in order, for Embree to read in place. add() may move them.
   const FaceRecord *records() const { return faces_.data(); }
@@ -177,6 +179,7 @@ class MeshState {
 
   std::vector<FaceRecord> faces_;
   std::vector<uint8_t> alive_;
+  std::size_t removed_ = 0;
   std::vector<uint32_t> parent_;
   std::vector<uint8_t> flip_;  // parity to parent
   std::vector<VertexFaces> around_;
