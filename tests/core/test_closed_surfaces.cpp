@@ -155,6 +155,15 @@ const Case &noisy_genus2_case() {
   return c;
 }
 
+const Case &density_gradient_case() {
+  // Uniform random samples of a torus thinned to a density ten times higher at one end than at
+  // the other (about 12,000 of 30,000 points kept): the spacing, the sphere and the hole width
+  // all follow the local spacing, so nothing is tuned to one density.
+  static const Case c =
+      make_case("torus with a tenfold density gradient", density_gradient(torus_random(30000, 1.0, 0.35, 24), 10.0, 24));
+  return c;
+}
+
 const Case &contour_stack_case() {
   // A torus cut by 30 parallel planes, three points per plane gap along each cut, as CT and MRI
   // segmentations deliver: before the spacing measured the gaps between cuts (neighbors.cpp),
@@ -188,6 +197,7 @@ MOA_CONTRACT_TESTS(pipe)
 MOA_CONTRACT_TESTS(sphere_duplicates)
 MOA_CONTRACT_TESTS(noisy_torus)
 MOA_CONTRACT_TESTS(noisy_genus2)
+MOA_CONTRACT_TESTS(density_gradient)
 MOA_CONTRACT_TESTS(contour_stack)
 MOA_CONTRACT_TESTS(fine_contour_stack)
 
@@ -214,6 +224,9 @@ static void test_sphere_duplicates_closed_genus0(void **) {
 
 static void test_noisy_torus_closed_genus1(void **) { MOA_EXPECT(closed_failure(noisy_torus_case(), 1)); }
 static void test_noisy_genus2_closed_genus2(void **) { MOA_EXPECT(closed_failure(noisy_genus2_case(), 2)); }
+static void test_density_gradient_closed_genus1(void **) {
+  MOA_EXPECT(closed_failure(density_gradient_case(), 1));
+}
 static void test_contour_stack_closed_genus1(void **) { MOA_EXPECT(closed_failure(contour_stack_case(), 1)); }
 static void test_fine_contour_stack_closed_genus1(void **) {
   MOA_EXPECT(closed_failure(fine_contour_stack_case(), 1));
@@ -236,6 +249,7 @@ int main(void) {
       MOA_CONTRACT_ENTRIES(sphere_duplicates), cmocka_unit_test(test_sphere_duplicates_closed_genus0),
       MOA_CONTRACT_ENTRIES(noisy_torus),      cmocka_unit_test(test_noisy_torus_closed_genus1),
       MOA_CONTRACT_ENTRIES(noisy_genus2),     cmocka_unit_test(test_noisy_genus2_closed_genus2),
+      MOA_CONTRACT_ENTRIES(density_gradient), cmocka_unit_test(test_density_gradient_closed_genus1),
       MOA_CONTRACT_ENTRIES(contour_stack),    cmocka_unit_test(test_contour_stack_closed_genus1),
       MOA_CONTRACT_ENTRIES(fine_contour_stack), cmocka_unit_test(test_fine_contour_stack_closed_genus1),
   };

@@ -287,6 +287,21 @@ void add_noise(Points &p, double fraction_of_diagonal, std::uint64_t seed) {
   for (double &v : p) v += sigma * rng.normal();
 }
 
+Points density_gradient(const Points &p, double ratio, std::uint64_t seed) {
+  Rng rng(seed);
+  double lo = p[0], hi = p[0];
+  for (std::size_t i = 0; i < p.size(); i += 3) {
+    lo = std::min(lo, p[i]);
+    hi = std::max(hi, p[i]);
+  }
+  Points kept;
+  for (std::size_t i = 0; i + 2 < p.size(); i += 3) {
+    const double t = (p[i] - lo) / (hi - lo);
+    if (rng.uniform() * ratio < 1 + (ratio - 1) * t * t) push(kept, p[i], p[i + 1], p[i + 2]);
+  }
+  return kept;
+}
+
 void shuffle(Points &p, std::uint64_t seed) {
   Rng rng(seed);
   for (std::size_t i = p.size() / 3; i > 1; --i) {

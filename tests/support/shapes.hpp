@@ -60,6 +60,10 @@ Points pipe_samples(double thickness, double length, std::size_t n, std::uint64_
 
 // Helpers.
 void add_noise(Points &p, double fraction_of_diagonal, std::uint64_t seed);
+// Keeps each point with a chance that grows with the square of its x across the bounding box,
+// from 1 / ratio at the low end to 1 at the high end: a density `ratio` times higher on one side,
+// as a scanner leaves it on the near and far sides of an object.
+Points density_gradient(const Points &p, double ratio, std::uint64_t seed);
 void shuffle(Points &p, std::uint64_t seed);
 double bbox_diagonal(const Points &p);
 // n points uniform by area on a triangle mesh.
