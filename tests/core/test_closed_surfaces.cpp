@@ -159,8 +159,8 @@ const Case &density_gradient_case() {
   // Uniform random samples of a torus thinned to a density ten times higher at one end than at
   // the other (about 12,000 of 30,000 points kept): the spacing, the sphere and the hole width
   // all follow the local spacing, so nothing is tuned to one density.
-  static const Case c =
-      make_case("torus with a tenfold density gradient", density_gradient(torus_random(30000, 1.0, 0.35, 24), 10.0, 24));
+  static const Case c = make_case("torus with a tenfold density gradient",
+                                  density_gradient(torus_random(30000, 1.0, 0.35, 24), 10.0, 24));
   return c;
 }
 
