@@ -64,8 +64,8 @@ class CrossingIndex {
   uint32_t committed_ = 0;                      // faces [0, committed_) are in the scene
   std::size_t removed_at_build_ = 0;            // the mesh's removed_count() then
   const FaceRecord *shared_records_ = nullptr;  // the mesh's faces as the scene reads them
-  std::vector<uint32_t> scene_corners_;  // or else the live faces' corners, when compacted,
-  std::vector<uint32_t> scene_faces_;    // and the face of each of the scene's primitives
+  std::vector<uint32_t> scene_corners_;         // or else the live faces' corners, when compacted,
+  std::vector<uint32_t> scene_faces_;           // and the face of each of the scene's primitives
   double cell_ = 0;
   std::unordered_map<uint64_t, std::vector<uint32_t>> grid_;
   std::vector<uint32_t> oversized_;  // pending faces spanning too many cells
