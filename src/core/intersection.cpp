@@ -154,12 +154,11 @@ void CrossingIndex::rebuild(MeshState &mesh) {
   // query skips them), so the index costs no memory; face_added rebuilds if they move. Past
   // kMaxDeadShare removed faces, the scene holds a copy of the live ones instead.
   const std::size_t count = mesh.face_count();
-  std::size_t live = 0;
-  for (uint32_t f = 0; f < count; ++f) live += mesh.alive(f);
-  scene_corners_.clear();
-  scene_faces_.clear();
+  const std::size_t live = count - mesh.removed_count();  // a removed face never comes back
   if (double(count - live) > kMaxDeadShare * double(count)) {
     shared_records_ = nullptr;
+    scene_corners_.clear();
+    scene_faces_.clear();
     scene_corners_.reserve(3 * live);
     scene_faces_.reserve(live);
     for (uint32_t f = 0; f < count; ++f) {

@@ -1,7 +1,8 @@
 // Crossing checks for the topology judgment (paper §3.3, Type 1 intersections), backed by
 // Embree. Layout of the index as the mesh grows:
 //   - a committed Embree scene (BVH) over the bulk of the faces, rebuilt when the faces added
-//     since the last build outnumber half of those in it, so rebuilds cost O(F log F) in all;
+//     or removed since the last build outnumber half of those in it, so rebuilds cost
+//     O(F log F) in all;
 //     it reads the mesh's face records in place, or a compact copy of the live faces once many
 //     have been removed;
 //   - a hash grid over the faces added since the last build.
