@@ -2,7 +2,9 @@
 // closed result of the true genus that uses every point.
 #include "core_harness.hpp"
 
+#include <array>
 #include <cmath>
+#include <set>
 
 // cmocka last: its macros (fail, ...) clash with names in the standard headers.
 #include <stdarg.h>
@@ -164,6 +166,26 @@ const Case &density_gradient_case() {
   return c;
 }
 
+// Survey data as LAS files hold it: metres far from the origin (a UTM-like offset), rounded to a
+// fixed step. The coordinates differ from each other only in their last seven or eight digits,
+// the rounding lines points up and makes exact duplicates, and every one must merge.
+const Case &survey_coordinates_case() {
+  const Points torus = torus_random(6000, 1.0, 0.35, 25);
+  const double offset[3] = {512345.0, 6123456.0, 87.0};
+  const double step = 0.012;  // a quarter of the point spacing
+  Points p;
+  std::set<std::array<long long, 3>> seen;
+  std::size_t duplicates = 0;
+  for (std::size_t i = 0; i < torus.size(); i += 3) {
+    std::array<long long, 3> cell;
+    for (int a = 0; a < 3; ++a) cell[a] = std::llround((torus[i + a] + offset[a]) / step);
+    duplicates += !seen.insert(cell).second;
+    for (int a = 0; a < 3; ++a) p.push_back(double(cell[a]) * step);
+  }
+  static const Case c = make_case("torus in survey coordinates", p, duplicates);
+  return c;
+}
+
 const Case &contour_stack_case() {
   // A torus cut by 30 parallel planes, three points per plane gap along each cut, as CT and MRI
   // segmentations deliver: before the spacing measured the gaps between cuts (neighbors.cpp),
@@ -198,6 +220,7 @@ MOA_CONTRACT_TESTS(sphere_duplicates)
 MOA_CONTRACT_TESTS(noisy_torus)
 MOA_CONTRACT_TESTS(noisy_genus2)
 MOA_CONTRACT_TESTS(density_gradient)
+MOA_CONTRACT_TESTS(survey_coordinates)
 MOA_CONTRACT_TESTS(contour_stack)
 MOA_CONTRACT_TESTS(fine_contour_stack)
 
@@ -227,6 +250,9 @@ static void test_noisy_genus2_closed_genus2(void **) { MOA_EXPECT(closed_failure
 static void test_density_gradient_closed_genus1(void **) {
   MOA_EXPECT(closed_failure(density_gradient_case(), 1));
 }
+static void test_survey_coordinates_closed_genus1(void **) {
+  MOA_EXPECT(closed_failure(survey_coordinates_case(), 1));
+}
 static void test_contour_stack_closed_genus1(void **) { MOA_EXPECT(closed_failure(contour_stack_case(), 1)); }
 static void test_fine_contour_stack_closed_genus1(void **) {
   MOA_EXPECT(closed_failure(fine_contour_stack_case(), 1));
@@ -250,6 +276,8 @@ int main(void) {
       MOA_CONTRACT_ENTRIES(noisy_torus),      cmocka_unit_test(test_noisy_torus_closed_genus1),
       MOA_CONTRACT_ENTRIES(noisy_genus2),     cmocka_unit_test(test_noisy_genus2_closed_genus2),
       MOA_CONTRACT_ENTRIES(density_gradient), cmocka_unit_test(test_density_gradient_closed_genus1),
+      MOA_CONTRACT_ENTRIES(survey_coordinates),
+      cmocka_unit_test(test_survey_coordinates_closed_genus1),
       MOA_CONTRACT_ENTRIES(contour_stack),    cmocka_unit_test(test_contour_stack_closed_genus1),
       MOA_CONTRACT_ENTRIES(fine_contour_stack), cmocka_unit_test(test_fine_contour_stack_closed_genus1),
   };
