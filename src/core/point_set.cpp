@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <numeric>
 #include <string>
 
@@ -41,11 +42,12 @@ void check_finite(const double *xyz, std::size_t count) {
   }
 }
 
-void check_not_collinear(const PointSet &p) {
+void check_not_collinear(const double *xyz, const std::vector<uint32_t> &unique) {
   // The points are distinct, so the first two define a line.
-  const Vec3 a = p.exact(0), b = p.exact(1);
-  for (uint32_t c = 2; c < p.size(); ++c)
-    if (!collinear(a, b, p.exact(c))) return;
+  auto at = [xyz](uint32_t i) { return Vec3{xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]}; };
+  const Vec3 a = at(unique[0]), b = at(unique[1]);
+  for (std::size_t c = 2; c < unique.size(); ++c)
+    if (!collinear(a, b, at(unique[c]))) return;
   throw Error(MOA_ERROR_INVALID_INPUT, "all points are collinear: no surface passes through them");
 }
 
@@ -71,16 +73,20 @@ PointSet prepare_points(const double *xyz, std::size_t count) {
     if (pa[2] != pb[2]) return pa[2] < pb[2];
     return a < b;
   });
-  std::vector<uint32_t> unique;
+  std::vector<uint32_t> unique, repeated;
   unique.reserve(count);
   for (std::size_t k = 0; k < count; ++k) {
     if (k > 0) {
       const double *pa = xyz + 3 * std::size_t(order[k]), *pb = xyz + 3 * std::size_t(order[k - 1]);
-      if (pa[0] == pb[0] && pa[1] == pb[1] && pa[2] == pb[2]) continue;
+      if (pa[0] == pb[0] && pa[1] == pb[1] && pa[2] == pb[2]) {
+        repeated.push_back(order[k]);
+        continue;
+      }
     }
     unique.push_back(order[k]);
   }
-  ps.duplicates = count - unique.size();
+  std::vector<uint32_t>().swap(order);
+  ps.duplicates = repeated.size();
   if (unique.size() < 3)
     throw Error(MOA_ERROR_INVALID_INPUT,
                 "only " + std::to_string(unique.size()) +
@@ -118,17 +124,53 @@ PointSet prepare_points(const double *xyz, std::size_t count) {
   // exact and keeps every sign, so bring such clouds to an extent near 1.
   const int shift = (extent < 0x1p-100 || extent > 0x1p100) ? -std::ilogb(extent) : 0;
 
+  check_not_collinear(xyz, unique);
   ps.input = xyz;
   ps.shift = shift;
   ps.work.resize(keyed.size());
-  ps.original.resize(keyed.size());
+  ps.original.resize(count);
   for (std::size_t k = 0; k < keyed.size(); ++k) {
     Vec3 p = at(keyed[k].second);
     ps.work[k] = (p - center) * (1.0 / diag);
     ps.original[k] = keyed[k].second;
   }
-  check_not_collinear(ps);
+  std::copy(repeated.begin(), repeated.end(), ps.original.begin() + std::ptrdiff_t(keyed.size()));
   return ps;
+}
+
+namespace {
+
+void swap_points(double *xyz, std::size_t i, std::size_t j) {
+  for (int a = 0; a < 3; ++a) std::swap(xyz[3 * i + a], xyz[3 * j + a]);
+}
+
+}  // namespace
+
+// Both directions follow the cycles of the permutation, so each point moves once.
+InternalOrder::InternalOrder(const PointSet &points, double *xyz)
+    : from_(points.original), xyz_(xyz), moved_(from_.size()) {
+  for (std::size_t start = 0; start < from_.size(); ++start) {
+    if (moved_[start]) continue;
+    std::size_t k = start;
+    while (from_[k] != start) {
+      swap_points(xyz_, k, from_[k]);  // position k gets its point; k's old one moves on
+      moved_[k] = true;
+      k = from_[k];
+    }
+    moved_[k] = true;
+  }
+}
+
+InternalOrder::~InternalOrder() {
+  // Every flag is set: clearing one marks its point as back in the caller's place.
+  for (std::size_t start = 0; start < from_.size(); ++start) {
+    if (!moved_[start]) continue;
+    for (std::size_t k = from_[start]; k != start; k = from_[k]) {
+      swap_points(xyz_, start, k);  // start's point goes home to k; k's comes to start
+      moved_[k] = false;
+    }
+    moved_[start] = false;
+  }
 }
 
 }  // namespace moa

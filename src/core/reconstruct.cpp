@@ -68,7 +68,7 @@ std::unique_ptr<KdIndex> smooth_if_noisy(PointSet &points, const Params &params,
   return index;
 }
 
-Result run_stages(const double *xyz, std::size_t count, const Params &params,
+Result run_stages(double *xyz, std::size_t count, const Params &params,
                   const ProgressFn &progress) {
   Result result;
   moa_stats &st = result.stats;
@@ -80,6 +80,7 @@ Result run_stages(const double *xyz, std::size_t count, const Params &params,
   auto t = Clock::now();
   report(MOA_STAGE_POINTS, 0.0);
   PointSet points = prepare_points(xyz, count);
+  InternalOrder ordered(points, xyz);
   st.input_points = count;
   st.unique_points = points.size();
   st.duplicate_points = points.duplicates;
@@ -142,7 +143,7 @@ Result run_stages(const double *xyz, std::size_t count, const Params &params,
 
 }  // namespace
 
-Result reconstruct(const double *xyz, std::size_t count, const Params &params,
+Result reconstruct(double *xyz, std::size_t count, const Params &params,
                    const ProgressFn &progress) {
   if (count > 0 && !xyz) throw Error(MOA_ERROR_INVALID_ARGUMENT, "points are NULL");
   int threads = int(params.threads);

@@ -47,7 +47,9 @@ struct Result {
 };
 
 // Runs the whole reconstruction. Throws moa::Error (including Cancelled) or std::bad_alloc.
-Result reconstruct(const double *xyz, std::size_t point_count, const Params &params,
+// The points are reordered in place while it runs and are back in their order, bit for bit,
+// when it returns or throws.
+Result reconstruct(double *xyz, std::size_t point_count, const Params &params,
                    const ProgressFn &progress);
 
 }  // namespace moa

@@ -231,14 +231,23 @@ static void test_progress_reports_every_stage(void **state) {
 }
 
 /* Cancelling in any stage gives MOA_ERROR_CANCELLED, no mesh, and a context whose next run
- * gives the same mesh as an undisturbed one. */
+ * gives the same mesh as an undisturbed one, on the caller's points in the caller's order: the
+ * run reorders them in place and must put them back when cancelled too. Every tenth point is
+ * given twice, at the end, so that the duplicates move as well. */
 static void test_cancel_each_stage(void **state) {
   moa_ctx *ctx = (moa_ctx *)*state;
+  const size_t count = ABI_SPHERE_POINTS + ABI_SPHERE_POINTS / 10;
+  double *xyz = (double *)malloc(3 * count * sizeof(double));
   ProgressLog log;
-  size_t n_ref = 0, n = 0;
+  size_t n_ref = 0, n = 0, i;
   uint32_t *reference, *mesh;
   moa_mesh m;
   int s;
+  assert_non_null(xyz);
+  abi_fibonacci_ellipsoid(xyz, ABI_SPHERE_POINTS, 2.0, 2.0, 2.0);
+  for (i = 0; i < ABI_SPHERE_POINTS / 10; ++i)
+    memcpy(xyz + 3 * (ABI_SPHERE_POINTS + i), xyz + 3 * (10 * i), 3 * sizeof(double));
+  assert_int_equal(moa_set_points(ctx, xyz, count), MOA_OK);
   assert_int_equal(moa_run(ctx), MOA_OK);
   reference = abi_copy_mesh(ctx, &n_ref);
   for (s = 0; s < MOA_STAGE_COUNT; ++s) {
@@ -256,8 +265,11 @@ static void test_cancel_each_stage(void **state) {
     assert_int_equal(n, n_ref);
     assert_memory_equal(mesh, reference, 3 * n * sizeof(uint32_t));
     free(mesh);
+    m = abi_check_mesh(ctx, count);
+    assert_memory_equal(m.vertices, xyz, 3 * count * sizeof(double));
   }
   free(reference);
+  free(xyz);
 }
 
 /* Bad points fail in moa_run with MOA_ERROR_INVALID_INPUT, discard the last mesh, and leave the

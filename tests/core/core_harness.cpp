@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <exception>
+#include <stdexcept>
 #include <fstream>
 #include <sstream>
 
@@ -73,8 +74,10 @@ Run run_reconstruct(const Points &points, unsigned threads, Params params) {
   params.threads = threads;
   const auto start = std::chrono::steady_clock::now();
   try {
-    Result result = reconstruct(points.data(), points.size() / 3, params,
+    Points copy = points;  // the run reorders it and puts it back
+    Result result = reconstruct(copy.data(), copy.size() / 3, params,
                                 [](moa_stage, double) { return false; });
+    if (copy != points) throw std::runtime_error("the points were not restored to their order");
     run.triangles = std::move(result.triangles);
     run.stats = result.stats;
   } catch (const std::exception &e) {
