@@ -73,9 +73,12 @@ constexpr std::size_t kSpikeTries = 2;
 constexpr std::size_t kMaxSpikeFaces = 6;
 // Largest piece dropped when it lies within kStrayReach spacings of another, and largest piece
 // dropped when its median edge is longer than kSparseSpacings median point spacings of the
-// cloud (drop_stray_pieces).
+// cloud (drop_stray_pieces): kMaxSparseFaces, or one kSparseShare-th of the faces when that is
+// more (outliers spread through the volume around a scan, 5 % of its points, spanned pieces of
+// up to 370 faces with edges ten spacings long).
 constexpr std::size_t kMaxStrayFaces = 12;
 constexpr std::size_t kMaxSparseFaces = 64;
+constexpr std::size_t kSparseShare = 64;
 constexpr double kStrayReach = 2.5;
 constexpr double kSparseSpacings = 4.0;
 
@@ -245,11 +248,15 @@ class LoopFiller {
   // a hole of the other piece, which blocks its patch. A small piece away from other surfaces
   // stays, unless its edges are many times the cloud's typical spacing: then its corners are a
   // few stray points (outliers) that happened to span triangles, and they stay out of the mesh.
-  std::size_t drop_stray_pieces() {
+  // Before the fill only sparse pieces go (layers = false): outliers that spanned triangles
+  // among themselves would otherwise take more in from the loops' pools and grow.
+  std::size_t drop_stray_pieces(bool layers = true) {
     const Pieces pieces(g_.mesh, g_.points.size());
+    const std::size_t live = g_.mesh.face_count() - g_.mesh.removed_count();
+    const std::size_t max_sparse = std::max(kMaxSparseFaces, live / kSparseShare);
     std::map<uint32_t, std::vector<uint32_t>> small;
     for (uint32_t f = 0; f < g_.mesh.face_count(); ++f)
-      if (g_.mesh.alive(f) && pieces.faces(pieces.of(f)) <= kMaxSparseFaces)
+      if (g_.mesh.alive(f) && pieces.faces(pieces.of(f)) <= max_sparse)
         small[pieces.of(f)].push_back(f);
     const auto &w = g_.points.work;
     const double sparse_edge = kSparseSpacings * median_spacing(g_.nb);
@@ -278,7 +285,7 @@ class LoopFiller {
       }
       std::nth_element(edges.begin(), edges.begin() + std::ptrdiff_t(edges.size() / 2),
                        edges.end());
-      const bool layer = faces.size() <= kMaxStrayFaces && on_other;
+      const bool layer = layers && faces.size() <= kMaxStrayFaces && on_other;
       if (!layer && edges[edges.size() / 2] <= sparse_edge) continue;
       for (uint32_t f : faces) g_.mesh.remove(f);
       removed += faces.size();
@@ -956,6 +963,7 @@ void fill_loops(GrowthState &g, const std::function<void(double)> &tick) {
   // not be closed by the faces along them (a bad neighbourhood often blocks the last
   // triangles), and fill again.
   const std::size_t first_loop_face = g.mesh.face_count();
+  g.stats.triangles_removed += LoopFiller(g).drop_stray_pieces(false);
   constexpr int kRounds = 6;
   for (int round = 0; round < kRounds; ++round) {
     LoopFiller filler(g);
@@ -976,7 +984,10 @@ void fill_loops(GrowthState &g, const std::function<void(double)> &tick) {
   for (int round = 0; round < kPatchRounds && LoopFiller(g).patch_open_holes() > 0; ++round) {
   }
   // What stays open may be a strip between two pieces whose loops each count as a border.
+  // Pieces count as joined through a shared vertex, so the pinches go first: a stray piece
+  // hanging from the surface by one vertex would be split off by finish_mesh, and stay.
   LoopFiller(g).zip_parallel_loops();
+  g.stats.triangles_removed += open_pinched_vertices(g);
   g.stats.triangles_removed += LoopFiller(g).drop_stray_pieces();
   // Closing holes beside a bridge across a narrow gap makes a handle of it: cut again. Before
   // the take-in, which lengthens a handle's waist when it puts a point on it, and which takes
