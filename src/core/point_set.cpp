@@ -42,12 +42,21 @@ void check_finite(const double *xyz, std::size_t count) {
   }
 }
 
+// The caller's point i.
+Vec3 point_at(const double *xyz, uint32_t i) {
+  const double *p = xyz + 3 * std::size_t(i);
+  return {p[0], p[1], p[2]};
+}
+
+void swap_points(double *xyz, std::size_t i, std::size_t j) {
+  for (int a = 0; a < 3; ++a) std::swap(xyz[3 * i + a], xyz[3 * j + a]);
+}
+
 void check_not_collinear(const double *xyz, const std::vector<uint32_t> &unique) {
   // The points are distinct, so the first two define a line.
-  auto at = [xyz](uint32_t i) { return Vec3{xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]}; };
-  const Vec3 a = at(unique[0]), b = at(unique[1]);
+  const Vec3 a = point_at(xyz, unique[0]), b = point_at(xyz, unique[1]);
   for (std::size_t c = 2; c < unique.size(); ++c)
-    if (!collinear(a, b, at(unique[c]))) return;
+    if (!collinear(a, b, point_at(xyz, unique[c]))) return;
   throw Error(MOA_ERROR_INVALID_INPUT, "all points are collinear: no surface passes through them");
 }
 
@@ -65,7 +74,6 @@ PointSet prepare_points(const double *xyz, std::size_t count) {
   // Merge exact duplicates: sort by coordinates, index breaking ties, keep the first of a run.
   std::vector<uint32_t> order(count);
   std::iota(order.begin(), order.end(), 0u);
-  auto at = [xyz](uint32_t i) { return Vec3{xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]}; };
   tbb::parallel_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
     const double *pa = xyz + 3 * std::size_t(a), *pb = xyz + 3 * std::size_t(b);
     if (pa[0] != pb[0]) return pa[0] < pb[0];
@@ -92,9 +100,9 @@ PointSet prepare_points(const double *xyz, std::size_t count) {
                 "only " + std::to_string(unique.size()) +
                     " distinct points after merging exact duplicates; at least 3 are needed");
 
-  Vec3 lo = at(unique[0]), hi = lo;
+  Vec3 lo = point_at(xyz, unique[0]), hi = lo;
   for (uint32_t i : unique) {
-    Vec3 p = at(i);
+    Vec3 p = point_at(xyz, i);
     lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
     hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
   }
@@ -109,7 +117,7 @@ PointSet prepare_points(const double *xyz, std::size_t count) {
   std::vector<std::pair<uint64_t, uint32_t>> keyed(unique.size());
   const double cells = double(1 << 21) - 1;
   for (std::size_t k = 0; k < unique.size(); ++k) {
-    Vec3 p = at(unique[k]);
+    Vec3 p = point_at(xyz, unique[k]);
     auto q = [&](double v, double l) {
       return std::uint64_t(std::clamp((v - l) / extent * cells, 0.0, cells));
     };
@@ -130,21 +138,13 @@ PointSet prepare_points(const double *xyz, std::size_t count) {
   ps.work.resize(keyed.size());
   ps.original.resize(count);
   for (std::size_t k = 0; k < keyed.size(); ++k) {
-    Vec3 p = at(keyed[k].second);
+    Vec3 p = point_at(xyz, keyed[k].second);
     ps.work[k] = (p - center) * (1.0 / diag);
     ps.original[k] = keyed[k].second;
   }
   std::copy(repeated.begin(), repeated.end(), ps.original.begin() + std::ptrdiff_t(keyed.size()));
   return ps;
 }
-
-namespace {
-
-void swap_points(double *xyz, std::size_t i, std::size_t j) {
-  for (int a = 0; a < 3; ++a) std::swap(xyz[3 * i + a], xyz[3 * j + a]);
-}
-
-}  // namespace
 
 // Both directions follow the cycles of the permutation, so each point moves once.
 InternalOrder::InternalOrder(const PointSet &points, double *xyz)
