@@ -119,6 +119,27 @@ Points tetrahedron_samples(std::size_t n, std::uint64_t seed) {
   return sample_mesh(v, t, n, seed);
 }
 
+// A cone of height 1.5 on a unit disc, sampled at random: the rim is an edge of 56 degrees.
+Points cone_samples(std::size_t n, std::uint64_t seed) {
+  const std::uint32_t m = 256;
+  std::vector<double> v = {0, 0, 1.5, 0, 0, 0};  // apex, centre of the base
+  std::vector<std::uint32_t> t;
+  for (std::uint32_t i = 0; i < m; ++i) {
+    const double a = 2 * M_PI * double(i) / double(m);
+    v.insert(v.end(), {std::cos(a), std::sin(a), 0.0});
+    const std::uint32_t p = 2 + i, q = 2 + (i + 1) % m;
+    t.insert(t.end(), {0, p, q, 1, q, p});
+  }
+  return sample_mesh(v, t, n, seed);
+}
+
+const Case &cone_case() {
+  // Sample 6: the side and the base grew apart along a quarter of the rim, leaving a strip 45
+  // boundary edges round, a border by the width loop_width saw from the strip's ends.
+  static const Case c = make_case("random cone samples", cone_samples(5000, 6));
+  return c;
+}
+
 const Case &tetrahedron_case() {
   // Sample 6: holes along the edges that no widening by rims closed (6 boundary edges before
   // the last resort cleared the stars of a hole's vertices).
@@ -211,6 +232,7 @@ MOA_CONTRACT_TESTS(torus_grid)
 MOA_CONTRACT_TESTS(genus2)
 MOA_CONTRACT_TESTS(genus3)
 MOA_CONTRACT_TESTS(tetrahedron)
+MOA_CONTRACT_TESTS(cone)
 MOA_CONTRACT_TESTS(cube)
 MOA_CONTRACT_TESTS(box)
 MOA_CONTRACT_TESTS(cylinder)
@@ -238,6 +260,7 @@ static void test_pipe_closed_genus1(void **) { MOA_EXPECT(closed_failure(pipe_ca
 static void test_tetrahedron_closed_genus0(void **) {
   MOA_EXPECT(closed_failure(tetrahedron_case(), 0, 0.999));
 }
+static void test_cone_closed_genus0(void **) { MOA_EXPECT(closed_failure(cone_case(), 0, 0.999)); }
 static void test_tetrahedron_take_in_closed_genus0(void **) {
   MOA_EXPECT(closed_failure(tetrahedron_take_in_case(), 0));
 }
@@ -272,6 +295,7 @@ int main(void) {
       MOA_CONTRACT_ENTRIES(pipe),             cmocka_unit_test(test_pipe_closed_genus1),
       MOA_CONTRACT_ENTRIES(tetrahedron),      cmocka_unit_test(test_tetrahedron_closed_genus0),
       cmocka_unit_test(test_tetrahedron_take_in_closed_genus0),
+      MOA_CONTRACT_ENTRIES(cone),             cmocka_unit_test(test_cone_closed_genus0),
       MOA_CONTRACT_ENTRIES(sphere_duplicates), cmocka_unit_test(test_sphere_duplicates_closed_genus0),
       MOA_CONTRACT_ENTRIES(noisy_torus),      cmocka_unit_test(test_noisy_torus_closed_genus1),
       MOA_CONTRACT_ENTRIES(noisy_genus2),     cmocka_unit_test(test_noisy_genus2_closed_genus2),
