@@ -707,8 +707,8 @@ class LoopFiller {
     const std::size_t n = loop.size();
     if (n <= 3) return 0;
     if (n > kMaxMeasuredLoop) return std::numeric_limits<double>::infinity();
-    // A loop that meets itself is a chain of holes joined at pinches, which open_pinched_vertices
-    // parts; between two pieces that touch at points along a rim, as wide as the rim.
+    // A loop that meets itself is a chain of holes joined at pinches (two pieces touching at
+    // points along a rim), which open_pinched_vertices parts into loops of their own.
     std::vector<uint32_t> sorted(loop);
     std::sort(sorted.begin(), sorted.end());
     if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
