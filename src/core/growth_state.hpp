@@ -15,13 +15,16 @@
 namespace moa {
 
 struct GrowthState {
-  GrowthState(const PointSet &p, const Neighborhood &n, const Params &par, double cell_size,
+  // `typical_spacing` is the cloud's median point spacing (median_spacing).
+  GrowthState(const PointSet &p, const Neighborhood &n, const Params &par, double typical_spacing,
               moa_stats &st)
       : points(p),
         nb(n),
         params(par),
+        spacing(typical_spacing),
         mesh(p.size()),
-        crossings(p, cell_size),
+        // The crossing index's grid of recent faces has cells two median spacings wide.
+        crossings(p, 2.0 * typical_spacing),
         judge(p, n, par, mesh, crossings),
         search(p, n, par),
         stats(st) {}
@@ -51,6 +54,7 @@ struct GrowthState {
   const PointSet &points;
   const Neighborhood &nb;
   const Params &params;
+  const double spacing;  // the cloud's median point spacing, work units
   MeshState mesh;
   CrossingIndex crossings;
   TopologyJudge judge;

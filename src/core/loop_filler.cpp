@@ -265,7 +265,7 @@ class LoopFiller {
       if (g_.mesh.alive(f) && pieces.faces(pieces.of(f)) <= max_sparse)
         small[pieces.of(f)].push_back(f);
     const auto &w = g_.points.work;
-    const double sparse_edge = kSparseSpacings * median_spacing(g_.nb);
+    const double sparse_edge = kSparseSpacings * g_.spacing;
     std::size_t removed = 0;
     std::vector<double> edges;
     for (const auto &[piece, faces] : small) {
@@ -749,7 +749,7 @@ class LoopFiller {
   void classify_and_pool() {
     std::unordered_map<uint32_t, uint32_t> &loop_of_vertex = loop_of_vertex_;
     std::unordered_map<uint32_t, std::size_t> faces_of_component = faces_per_component();
-    double sparse_spacing = 0;  // measured when first needed: a pass over the cloud
+    const double sparse_spacing = kSparseSpacings * g_.spacing;
     for (uint32_t l = 0; l < loops_.size(); ++l) {
       Loop &loop = loops_[l];
       double spacing = 0;
@@ -769,12 +769,9 @@ class LoopFiller {
       const double surface_vertices = 0.5 * double(faces_of_component[loop.piece]);
       // A strip is narrow by its waists, the spacing capped where the loop runs among stray
       // points: their own spacing would make a gap of any width among them look narrow.
-      bool narrow = width <= hole_width;
-      if (!narrow) {
-        if (sparse_spacing == 0) sparse_spacing = kSparseSpacings * median_spacing(g_.nb);
-        narrow =
-            widest_waist(loop.vertices) <= g_.params.hole_size * std::min(spacing, sparse_spacing);
-      }
+      const bool narrow =
+          width <= hole_width ||
+          widest_waist(loop.vertices) <= g_.params.hole_size * std::min(spacing, sparse_spacing);
       const bool small = double(n) <= kSmallLoopShare * std::sqrt(surface_vertices) &&
                          width <= kSmallLoopWidths * hole_width;
       loop.fillable = g_.params.solid != 0 || narrow || small;

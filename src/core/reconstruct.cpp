@@ -102,8 +102,7 @@ Result run_stages(double *xyz, std::size_t count, const Params &params,
     index.reset();
     st.stage_ms[MOA_STAGE_NEIGHBORS] = ms_since(t);
 
-    // The crossing index's grid of recent faces has cells two median spacings wide.
-    GrowthState g(points, nb, params, 2.0 * median_spacing(nb), st);
+    GrowthState g(points, nb, params, median_spacing(nb), st);
 
     t = Clock::now();
     report(MOA_STAGE_MESH, 0.0);
