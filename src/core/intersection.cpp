@@ -349,6 +349,19 @@ bool CrossingIndex::crosses(const Tri &t, double pad, MeshState &mesh,
   });
 }
 
+void CrossingIndex::faces_in_box(const Vec3 &lo, const Vec3 &hi, MeshState &mesh,
+                                 std::vector<uint32_t> &out) {
+  next_query();
+  visit_near(lo, hi, mesh, [&](uint32_t f) {
+    if (tested_.has(f) || !mesh.alive(f)) return false;
+    tested_.set(f);
+    Vec3 flo, fhi;
+    bounds(mesh.stored(f), flo, fhi);
+    if (boxes_meet(flo, fhi, lo, hi)) out.push_back(f);
+    return false;
+  });
+}
+
 std::size_t CrossingIndex::memory_bytes() const {
   std::size_t bytes = vertices_.capacity() * sizeof(float) + tested_.memory_bytes() +
                       (scene_corners_.capacity() + scene_faces_.capacity()) * sizeof(uint32_t);

@@ -32,6 +32,8 @@ class CrossingIndex {
   // units) of t's, faces sharing a vertex with t included: the neighbourhood the judgment
   // then searches for overlapping layers, found by the same queries.
   bool crosses(const Tri &t, double pad, MeshState &mesh, std::vector<uint32_t> &near);
+  // Appends to `out` the live faces whose bounding boxes meet the box lo..hi.
+  void faces_in_box(const Vec3 &lo, const Vec3 &hi, MeshState &mesh, std::vector<uint32_t> &out);
   // Registers face f (already added to mesh).
   void face_added(uint32_t f, MeshState &mesh);
 

@@ -98,23 +98,30 @@ class PointTaker {
 
   // Faces near p, by their corners as stored (a failed attempt re-adds faces under new
   // indices): those p lies over first, nearest plane first, then those its projection misses
-  // by a little, which an edge split can still reach.
+  // by a little, which an edge split can still reach. The faces around p's nearest neighbours,
+  // and the faces near p in space: at a sharp corner a long face across the crease can cover p
+  // with no corner among them, and every split of another face would then cross it.
   void host_faces(uint32_t p, double spacing) {
     const auto &w = g_.points.work;
     hosts_.clear();
-    const uint32_t *nb = g_.nb.of(p);
     const double limit = kMaxHeight * spacing;
+    auto consider = [&](uint32_t f) {
+      const Tri &t = g_.mesh.stored(f);
+      double l[3];
+      if (!barycentric(w[t[0]], w[t[1]], w[t[2]], w[p], l)) return;
+      const double outside = -std::min({l[0], l[1], l[2], 0.0});
+      if (outside > kMaxOutside) return;
+      Vec3 n = normalized(cross(w[t[1]] - w[t[0]], w[t[2]] - w[t[0]]));
+      double h = std::fabs(dot(w[p] - w[t[0]], n));
+      if (h <= limit) hosts_.push_back({outside > 0, h, t});
+    };
+    const uint32_t *nb = g_.nb.of(p);
     for (unsigned j = 0; j < std::min(kNearbyVertices, g_.nb.k); ++j)
-      for (uint32_t f : g_.mesh.faces_at(nb[j])) {
-        const Tri &t = g_.mesh.stored(f);
-        double l[3];
-        if (!barycentric(w[t[0]], w[t[1]], w[t[2]], w[p], l)) continue;
-        const double outside = -std::min({l[0], l[1], l[2], 0.0});
-        if (outside > kMaxOutside) continue;
-        Vec3 n = normalized(cross(w[t[1]] - w[t[0]], w[t[2]] - w[t[0]]));
-        double h = std::fabs(dot(w[p] - w[t[0]], n));
-        if (h <= limit) hosts_.push_back({outside > 0, h, t});
-      }
+      for (uint32_t f : g_.mesh.faces_at(nb[j])) consider(f);
+    const Vec3 reach{limit, limit, limit};
+    in_box_.clear();
+    g_.crossings.faces_in_box(w[p] - reach, w[p] + reach, g_.mesh, in_box_);
+    for (uint32_t f : in_box_) consider(f);
     std::sort(hosts_.begin(), hosts_.end());
     hosts_.erase(std::unique(hosts_.begin(), hosts_.end()), hosts_.end());
   }
@@ -237,6 +244,7 @@ class PointTaker {
   GrowthState &g_;
   bool layers_allowed_ = false;
   std::vector<Host> hosts_;
+  std::vector<uint32_t> in_box_;
 };
 
 }  // namespace

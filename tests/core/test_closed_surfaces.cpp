@@ -140,6 +140,14 @@ const Case &cone_case() {
   return c;
 }
 
+const Case &cone_take_in_case() {
+  // 20,000 points, sample 12: the loop module patched holes at the rim with faces up to ten
+  // spacings long that covered 13 points none of whose nearest neighbours was a corner: the
+  // take-in never saw those faces, and every split it tried crossed them.
+  static const Case c = make_case("random cone samples, 20,000 points", cone_samples(20000, 12));
+  return c;
+}
+
 const Case &tetrahedron_case() {
   // Sample 6: holes along the edges that no widening by rims closed (6 boundary edges before
   // the last resort cleared the stars of a hole's vertices).
@@ -233,6 +241,7 @@ MOA_CONTRACT_TESTS(genus2)
 MOA_CONTRACT_TESTS(genus3)
 MOA_CONTRACT_TESTS(tetrahedron)
 MOA_CONTRACT_TESTS(cone)
+MOA_CONTRACT_TESTS(cone_take_in)
 MOA_CONTRACT_TESTS(cube)
 MOA_CONTRACT_TESTS(box)
 MOA_CONTRACT_TESTS(cylinder)
@@ -261,6 +270,9 @@ static void test_tetrahedron_closed_genus0(void **) {
   MOA_EXPECT(closed_failure(tetrahedron_case(), 0, 0.999));
 }
 static void test_cone_closed_genus0(void **) { MOA_EXPECT(closed_failure(cone_case(), 0, 0.999)); }
+static void test_cone_take_in_closed_genus0(void **) {
+  MOA_EXPECT(closed_failure(cone_take_in_case(), 0));
+}
 static void test_tetrahedron_take_in_closed_genus0(void **) {
   MOA_EXPECT(closed_failure(tetrahedron_take_in_case(), 0));
 }
@@ -296,6 +308,7 @@ int main(void) {
       MOA_CONTRACT_ENTRIES(tetrahedron),      cmocka_unit_test(test_tetrahedron_closed_genus0),
       cmocka_unit_test(test_tetrahedron_take_in_closed_genus0),
       MOA_CONTRACT_ENTRIES(cone),             cmocka_unit_test(test_cone_closed_genus0),
+      MOA_CONTRACT_ENTRIES(cone_take_in),     cmocka_unit_test(test_cone_take_in_closed_genus0),
       MOA_CONTRACT_ENTRIES(sphere_duplicates), cmocka_unit_test(test_sphere_duplicates_closed_genus0),
       MOA_CONTRACT_ENTRIES(noisy_torus),      cmocka_unit_test(test_noisy_torus_closed_genus1),
       MOA_CONTRACT_ENTRIES(noisy_genus2),     cmocka_unit_test(test_noisy_genus2_closed_genus2),
