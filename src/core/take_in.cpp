@@ -103,27 +103,27 @@ class PointTaker {
   // with no corner among them, and every split of another face would then cross it.
   void host_faces(uint32_t p, double spacing) {
     const auto &w = g_.points.work;
-    hosts_.clear();
     const double limit = kMaxHeight * spacing;
-    auto consider = [&](uint32_t f) {
+    const Vec3 reach{limit, limit, limit};
+    nearby_.clear();
+    g_.crossings.faces_in_box(w[p] - reach, w[p] + reach, g_.mesh, nearby_);
+    const uint32_t *nb = g_.nb.of(p);
+    for (unsigned j = 0; j < std::min(kNearbyVertices, g_.nb.k); ++j)
+      for (uint32_t f : g_.mesh.faces_at(nb[j])) nearby_.push_back(f);
+    std::sort(nearby_.begin(), nearby_.end());
+    nearby_.erase(std::unique(nearby_.begin(), nearby_.end()), nearby_.end());
+    hosts_.clear();
+    for (uint32_t f : nearby_) {
       const Tri &t = g_.mesh.stored(f);
       double l[3];
-      if (!barycentric(w[t[0]], w[t[1]], w[t[2]], w[p], l)) return;
+      if (!barycentric(w[t[0]], w[t[1]], w[t[2]], w[p], l)) continue;
       const double outside = -std::min({l[0], l[1], l[2], 0.0});
-      if (outside > kMaxOutside) return;
+      if (outside > kMaxOutside) continue;
       Vec3 n = normalized(cross(w[t[1]] - w[t[0]], w[t[2]] - w[t[0]]));
       double h = std::fabs(dot(w[p] - w[t[0]], n));
       if (h <= limit) hosts_.push_back({outside > 0, h, t});
-    };
-    const uint32_t *nb = g_.nb.of(p);
-    for (unsigned j = 0; j < std::min(kNearbyVertices, g_.nb.k); ++j)
-      for (uint32_t f : g_.mesh.faces_at(nb[j])) consider(f);
-    const Vec3 reach{limit, limit, limit};
-    in_box_.clear();
-    g_.crossings.faces_in_box(w[p] - reach, w[p] + reach, g_.mesh, in_box_);
-    for (uint32_t f : in_box_) consider(f);
+    }
     std::sort(hosts_.begin(), hosts_.end());
-    hosts_.erase(std::unique(hosts_.begin(), hosts_.end()), hosts_.end());
   }
 
   bool take(uint32_t p) {
@@ -238,13 +238,12 @@ class PointTaker {
     bool operator<(const Host &o) const {
       return std::tie(outside, height, corners) < std::tie(o.outside, o.height, o.corners);
     }
-    bool operator==(const Host &o) const { return corners == o.corners; }
   };
 
   GrowthState &g_;
   bool layers_allowed_ = false;
   std::vector<Host> hosts_;
-  std::vector<uint32_t> in_box_;
+  std::vector<uint32_t> nearby_;
 };
 
 }  // namespace
