@@ -6,7 +6,7 @@
 #   sanitize  the ci-sanitize preset: Debug + ASan/UBSan, the whole suite      build/ci-sanitize
 #   tsan      tests/robust/run_tsan.sh: contexts on threads under ThreadSanitizer  build/ci-tsan
 #   fuzz      tests/fuzz/run_fuzzers.sh: every libFuzzer target for MOA_FUZZ_SECONDS (default
-#             20, at most 60) each                                                 build/ci-fuzz
+#             10, at most 60) each                                                 build/ci-fuzz
 # Usage: bash tests/run_all.sh [PHASE...]   (default: all four, in that order)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -50,7 +50,7 @@ phase_tsan() {
 }
 
 phase_fuzz() {
-  bash tests/fuzz/run_fuzzers.sh build/ci-fuzz "${MOA_FUZZ_SECONDS:-20}"
+  bash tests/fuzz/run_fuzzers.sh build/ci-fuzz "${MOA_FUZZ_SECONDS:-10}"
 }
 
 for p in "${phases[@]}"; do run_phase "$p"; done

@@ -134,12 +134,12 @@ std::string stats_failure(const Case &c) {
   return text.empty() ? "" : header(c) + ": stats inconsistent with the result\n" + text;
 }
 
+// One more run, with 1 thread, against the first (2 threads): the serial and the parallel paths
+// of every stage must agree. A 2-thread run that varied from run to run would differ from the
+// serial one as well, so a second 2-thread run is not made (it cost a quarter of the core tests'
+// time under the sanitizers); tests/robust runs contexts twice and compares the meshes.
 std::string determinism_failure(const Case &c) {
   if (!c.run.error.empty()) return run_error(c);
-  const Run again = run_reconstruct(c.points, 2, c.params);
-  if (!again.error.empty()) return header(c) + ": second run threw: " + again.error;
-  if (again.triangles != c.run.triangles)
-    return header(c) + ": two runs with 2 threads differ: " + first_difference(c.run, again);
   const Run single = run_reconstruct(c.points, 1, c.params);
   if (!single.error.empty()) return header(c) + ": run with 1 thread threw: " + single.error;
   if (single.triangles != c.run.triangles)

@@ -38,7 +38,7 @@ Case make_case(const std::string &name, Points points, std::size_t duplicates = 
 // Each returns "" when the property holds, else a message for the failure report.
 std::string contract_failure(const Case &c);         // C1-C5
 std::string stats_failure(const Case &c);            // moa_stats agrees with the result
-std::string determinism_failure(const Case &c);      // C6: again with 2 threads, then with 1
+std::string determinism_failure(const Case &c);      // C6: again with 1 thread, the same triangles
 // Closed, one component, the genus, and every unique point used (or at least the share
 // min_used of them: on a noisy cloud a point two or three deviations off its surface may be too
 // far off every face to be taken in).
