@@ -136,8 +136,9 @@ std::string stats_failure(const Case &c) {
 
 // One more run, with 1 thread, against the first (2 threads): the serial and the parallel paths
 // of every stage must agree. A 2-thread run that varied from run to run would differ from the
-// serial one as well, so a second 2-thread run is not made (it cost a quarter of the core tests'
-// time under the sanitizers); tests/robust runs contexts twice and compares the meshes.
+// serial one as well, so a second 2-thread run is not made (it cost a quarter of the closed
+// surface and noisy cloud tests' time under the sanitizers); tests/robust runs contexts twice
+// and compares the meshes.
 std::string determinism_failure(const Case &c) {
   if (!c.run.error.empty()) return run_error(c);
   const Run single = run_reconstruct(c.points, 1, c.params);
