@@ -66,8 +66,21 @@ bool boxes_meet(const Vec3 &alo, const Vec3 &ahi, const Vec3 &blo, const Vec3 &b
          ahi.z >= blo.z && alo.z <= bhi.z;
 }
 
+// Spreads the low 21 bits of v to every third bit.
+uint64_t spread_bits(int64_t v) {
+  uint64_t x = uint64_t(v) & 0x1fffff;
+  x = (x | (x << 32)) & 0x1f00000000ffffull;
+  x = (x | (x << 16)) & 0x1f0000ff0000ffull;
+  x = (x | (x << 8)) & 0x100f00f00f00f00full;
+  x = (x | (x << 4)) & 0x10c30c30c30c30c3ull;
+  x = (x | (x << 2)) & 0x1249249249249249ull;
+  return x;
+}
+
+// A cell's Morton code: cells near each other get codes near each other, which the grid keeps
+// in nearby slots (face_grid.hpp).
 uint64_t cell_key(int64_t x, int64_t y, int64_t z) {
-  return (uint64_t(x & 0x1fffff) << 42) | (uint64_t(y & 0x1fffff) << 21) | uint64_t(z & 0x1fffff);
+  return (spread_bits(x) << 2) | (spread_bits(y) << 1) | spread_bits(z);
 }
 
 // One Embree device for the whole process, made on first use and never released. Devices are
@@ -108,7 +121,7 @@ void CrossingIndex::release() {
   std::vector<uint32_t>().swap(oversized_);
   std::vector<uint32_t>().swap(scene_corners_);
   std::vector<uint32_t>().swap(scene_faces_);
-  grid_ = {};
+  grid_.release();
 }
 
 void CrossingIndex::bounds(const Tri &t, Vec3 &lo, Vec3 &hi) const {
@@ -132,13 +145,16 @@ void CrossingIndex::grid_insert(uint32_t f, const Tri &t) {
   int64_t z0 = int64_t(std::floor(lo.z / cell_)), z1 = int64_t(std::floor(hi.z / cell_));
   for (int64_t x = x0; x <= x1; ++x)
     for (int64_t y = y0; y <= y1; ++y)
-      for (int64_t z = z0; z <= z1; ++z) grid_[cell_key(x, y, z)].push_back(f);
+      for (int64_t z = z0; z <= z1; ++z) grid_.insert(cell_key(x, y, z), f);
 }
 
 void CrossingIndex::rebuild(MeshState &mesh) {
   auto device = static_cast<RTCDevice>(device_);
   if (scene_) rtcReleaseScene(static_cast<RTCScene>(scene_));
   scene_ = nullptr;  // no stale handle if building the new scene fails below
+  // The pending faces go into the new scene; their grid is freed before Embree allocates its
+  // build, so that the two never add up (a failed build ends the run, index and all).
+  grid_.release();
   // Owns the new scene and geometry until they are complete, so that a failed allocation
   // releases them; Embree's device cannot be released while they are alive.
   std::unique_ptr<RTCSceneTy, void (*)(RTCScene)> scene(rtcNewScene(device), rtcReleaseScene);
@@ -186,7 +202,6 @@ void CrossingIndex::rebuild(MeshState &mesh) {
   committed_ = uint32_t(count);
   removed_at_build_ = mesh.removed_count();
   scan_debt_ = 0;
-  grid_.clear();
   oversized_.clear();
   ++rebuilds_;
 }
@@ -215,9 +230,10 @@ bool CrossingIndex::test_exact(const Tri &t, uint32_t f, MeshState &mesh) {
 void CrossingIndex::next_query() { tested_.clear(); }
 
 template <class Visit>
-bool CrossingIndex::visit_live(std::vector<uint32_t> &faces, const MeshState &mesh, Visit &visit) {
+bool CrossingIndex::visit_oversized(const MeshState &mesh, Visit &visit) {
   // Removed faces leave the list as they are met (the loop module removes about as many faces
   // as it adds, and they would be met again by every later query); the order does not matter.
+  std::vector<uint32_t> &faces = oversized_;
   for (std::size_t i = 0; i < faces.size();) {
     const uint32_t f = faces[i];
     if (!mesh.alive(f)) {
@@ -268,11 +284,9 @@ bool CrossingIndex::visit_near(const Vec3 &lo, const Vec3 &hi, MeshState &mesh, 
   int64_t z0 = int64_t(std::floor(lo.z / cell_)), z1 = int64_t(std::floor(hi.z / cell_));
   for (int64_t x = x0; x <= x1; ++x)
     for (int64_t y = y0; y <= y1; ++y)
-      for (int64_t z = z0; z <= z1; ++z) {
-        auto it = grid_.find(cell_key(x, y, z));
-        if (it != grid_.end() && visit_live(it->second, mesh, visit)) return true;
-      }
-  return visit_live(oversized_, mesh, visit);
+      for (int64_t z = z0; z <= z1; ++z)
+        if (grid_.visit_live(cell_key(x, y, z), mesh, visit)) return true;
+  return visit_oversized(mesh, visit);
 }
 
 bool CrossingIndex::crosses(const Tri &t, double pad, MeshState &mesh,
@@ -367,7 +381,7 @@ std::size_t CrossingIndex::memory_bytes() const {
                       (scene_corners_.capacity() + scene_faces_.capacity()) * sizeof(uint32_t);
   // Embree's BVH: about 36 bytes per committed triangle at medium quality, compact.
   bytes += std::size_t(committed_) * 36;
-  for (const auto &cell : grid_) bytes += 48 + cell.second.capacity() * 4;
+  bytes += grid_.memory_bytes() + oversized_.capacity() * sizeof(uint32_t);
   return bytes;
 }
 

@@ -11,9 +11,9 @@
 #pragma once
 
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
+#include "core/face_grid.hpp"
 #include "core/marks.hpp"
 #include "core/mesh_state.hpp"
 #include "core/point_set.hpp"
@@ -53,9 +53,9 @@ class CrossingIndex {
   bool test_exact(const Tri &t, uint32_t f, MeshState &mesh);
   void bounds(const Tri &t, Vec3 &lo, Vec3 &hi) const;
   void next_query();
-  // Calls visit(face) for the live faces of a grid cell or list, dropping the removed ones.
+  // Calls visit(face) for the live oversized faces, dropping the removed ones.
   template <class Visit>
-  bool visit_live(std::vector<uint32_t> &faces, const MeshState &mesh, Visit &visit);
+  bool visit_oversized(const MeshState &mesh, Visit &visit);
   // Calls visit(face) for committed faces near the sphere and pending faces near the box.
   template <class Visit>
   bool visit_near(const Vec3 &lo, const Vec3 &hi, MeshState &mesh, Visit &&visit);
@@ -70,7 +70,7 @@ class CrossingIndex {
   std::vector<uint32_t> scene_corners_;         // or else the live faces' corners, when compacted,
   std::vector<uint32_t> scene_faces_;           // and the face of each of the scene's primitives
   double cell_ = 0;
-  std::unordered_map<uint64_t, std::vector<uint32_t>> grid_;
+  FaceGrid grid_;
   std::vector<uint32_t> oversized_;  // pending faces spanning too many cells
   double scan_debt_ = 0;             // pending faces scanned one by one since the last build
   IndexMarks tested_;                // faces the current query has tested or ruled out
