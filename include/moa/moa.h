@@ -105,8 +105,10 @@ typedef struct moa_stats {
   size_t rejected_edge_fold;  /* rejections: the edge-sharing angle alpha */
   size_t rejected_vertex_fold;/* rejections: the vertex-sharing angles alpha, beta, gamma */
   size_t rejected_intersection; /* rejections: the triangle would cross an existing one */
-  size_t embree_rebuilds;     /* times the Embree scene was rebuilt */
-  double intersection_ms;     /* time spent in crossing checks (Embree and exact tests) */
+  size_t embree_rebuilds;     /* times an Embree scene was built (the parallel first pass of
+                                 Algorithm 1 builds its parts' scenes on their own) */
+  double intersection_ms;     /* time spent in crossing checks (Embree and exact tests),
+                                 summed over the worker threads */
   double stage_ms[MOA_STAGE_COUNT]; /* wall time per stage */
   double total_ms;            /* wall time of moa_run */
   unsigned threads;           /* worker threads used */

@@ -60,7 +60,14 @@ struct GrowthState {
   TopologyJudge judge;
   OppositeAngleSearch search;
   moa_stats &stats;
+  // Embree rebuilds and crossing-test time of the parallel first pass's parts (build_mesh),
+  // summed over the parts.
+  std::size_t parts_rebuilds = 0;
+  double parts_crossing_ms = 0;
 };
+
+// Hands the heap's free memory back to the system (reconstruct.cpp).
+void return_free_memory();
 
 // Algorithm 1 (paper §3.5.1). `tick(fraction)` reports progress and may throw Cancelled.
 void build_mesh(GrowthState &g, const std::function<void(double)> &tick);

@@ -36,6 +36,11 @@ class CrossingIndex {
   void faces_in_box(const Vec3 &lo, const Vec3 &hi, MeshState &mesh, std::vector<uint32_t> &out);
   // Registers face f (already added to mesh).
   void face_added(uint32_t f, MeshState &mesh);
+  // Registers every face of the mesh at once (one Embree build), after faces were added to
+  // the mesh without face_added.
+  void add_all(MeshState &mesh) { rebuild(mesh); }
+  // t's bounding box in the coordinates the index tests, padded as every broad-phase box is.
+  void bounds(const Tri &t, Vec3 &lo, Vec3 &hi) const;
 
   // Frees the Embree scene and the index's buffers once the mesh is complete; no query may
   // follow.
@@ -51,7 +56,6 @@ class CrossingIndex {
   uint32_t face_of(uint32_t prim) const { return scene_faces_.empty() ? prim : scene_faces_[prim]; }
   void grid_insert(uint32_t f, const Tri &t);
   bool test_exact(const Tri &t, uint32_t f, MeshState &mesh);
-  void bounds(const Tri &t, Vec3 &lo, Vec3 &hi) const;
   void next_query();
   // Calls visit(face) for the live oversized faces, dropping the removed ones.
   template <class Visit>

@@ -21,6 +21,16 @@
 #include "core/smoothing.hpp"
 
 namespace moa {
+
+// Algorithm 1's Embree rebuilds free tens of megabytes in pieces that glibc keeps resident;
+// handing them back before the loop module's own rebuild keeps the run's peak at the mesh
+// stage's (at a million points 15 MB lower).
+void return_free_memory() {
+#ifdef __GLIBC__
+  malloc_trim(0);
+#endif
+}
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -33,15 +43,6 @@ double ms_since(Clock::time_point t) {
 constexpr int kMaxSmoothingPasses = 3;
 // Neighbourhood of a pass forced on a cloud that does not look noisy.
 constexpr unsigned kForcedSmoothingK = 40;
-
-// Algorithm 1's Embree rebuilds free tens of megabytes in pieces that glibc keeps resident;
-// handing them back before the loop module's own rebuild keeps the run's peak at the mesh
-// stage's (at a million points 15 MB lower).
-void return_free_memory() {
-#ifdef __GLIBC__
-  malloc_trim(0);
-#endif
-}
 
 // Replaces the judgment's geometry by a smoothed copy when the parameter and the cloud call for
 // it (smoothing.hpp); the caller's points stay in raw_work. A pass leaves some roughness at the
@@ -115,8 +116,8 @@ Result run_stages(double *xyz, std::size_t count, const Params &params,
     fill_loops(g, [&](double f) { report(MOA_STAGE_LOOPS, f); });
     st.stage_ms[MOA_STAGE_LOOPS] = ms_since(t);
 
-    st.embree_rebuilds = g.crossings.rebuilds();
-    st.intersection_ms = g.crossings.milliseconds();
+    st.embree_rebuilds = g.crossings.rebuilds() + g.parts_rebuilds;
+    st.intersection_ms = g.crossings.milliseconds() + g.parts_crossing_ms;
     g.crossings.release();  // before the faces are copied out, so the copy reuses its memory
     faces = oriented_faces(g.mesh);
   }

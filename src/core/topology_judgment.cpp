@@ -325,6 +325,13 @@ bool TopologyJudge::flatness_fails(const Tri &t, const uint32_t *sphere, std::si
   return false;
 }
 
+double TopologyJudge::reach(const Tri &t) const {
+  const auto &w = points_.work;
+  const double mean_edge =
+      (dist(w[t[0]], w[t[1]]) + dist(w[t[1]], w[t[2]]) + dist(w[t[2]], w[t[0]])) / 3.0;
+  return kGatherPad * mean_edge;
+}
+
 Verdict TopologyJudge::judge(const Tri &t, const uint32_t *sphere, std::size_t count, bool relaxed,
                              bool layers_allowed) {
   if (degenerate(t, relaxed)) return Verdict::Degenerate;
@@ -342,10 +349,7 @@ Verdict TopologyJudge::judge(const Tri &t, const uint32_t *sphere, std::size_t c
   Frame frame = frame_of(t, edges);
   if (!relaxed && (vertex_folds(t) || faces_backwards(t, frame))) return Verdict::VertexFold;
   if (!relaxed && count > 0 && flatness_fails(t, sphere, count)) return Verdict::Flatness;
-  const auto &w = points_.work;
-  double mean_edge =
-      (dist(w[t[0]], w[t[1]]) + dist(w[t[1]], w[t[2]]) + dist(w[t[2]], w[t[0]])) / 3.0;
-  if (crossings_.crosses(t, kGatherPad * mean_edge, mesh_, near_)) return Verdict::Intersection;
+  if (crossings_.crosses(t, reach(t), mesh_, near_)) return Verdict::Intersection;
   // A sliver's plane is too ill-defined to project onto: on the relaxed passes it is left to
   // the exact crossing test alone.
   if (!layers_allowed && !(relaxed && is_sliver(t)) && overlaps_layer(t, frame, near_))

@@ -48,6 +48,9 @@ class TopologyJudge {
                 bool layers_allowed = false);
   // Records a verdict in the run statistics.
   static void count(Verdict v, moa_stats &stats);
+  // How far (work units) around t's bounding box judge() looks at faces: the crossing test's
+  // neighbourhood, which the layer test searches too.
+  double reach(const Tri &t) const;
 
  private:
   bool degenerate(const Tri &t, bool relaxed) const;

@@ -188,6 +188,7 @@ typedef struct ProgressLog {
   int wrong_thread;
   pthread_t thread;
   int cancel_stage; /* -1: never cancel */
+  int cancel_call;  /* cancel at this report of cancel_stage (1: the first) */
 } ProgressLog;
 
 static int log_progress(moa_stage stage, double fraction, void *user_data) {
@@ -201,13 +202,14 @@ static int log_progress(moa_stage stage, double fraction, void *user_data) {
   log->last_stage = (int)stage;
   if (!(fraction >= 0.0 && fraction <= 1.0)) log->bad_fraction = 1;
   if (!pthread_equal(pthread_self(), log->thread)) log->wrong_thread = 1;
-  return (int)stage == log->cancel_stage;
+  return (int)stage == log->cancel_stage && log->calls[stage] >= log->cancel_call;
 }
 
 static void reset_log(ProgressLog *log, int cancel_stage) {
   memset(log, 0, sizeof *log);
   log->thread = pthread_self();
   log->cancel_stage = cancel_stage;
+  log->cancel_call = 1;
 }
 
 static void test_progress_reports_every_stage(void **state) {
@@ -268,6 +270,47 @@ static void test_cancel_each_stage(void **state) {
     m = abi_check_mesh(ctx, count);
     assert_memory_equal(m.vertices, xyz, 3 * count * sizeof(double));
   }
+  free(reference);
+  free(xyz);
+}
+
+/* A cloud large enough for Algorithm 1's parallel first pass (its parts grow on worker
+ * threads): the reports still come on the calling thread, in order, and a cancellation in the
+ * middle of that pass stops the run and leaves the context usable. */
+static void test_parallel_pass_progress_and_cancel(void **state) {
+  moa_ctx *ctx = (moa_ctx *)*state;
+  const size_t count = 9000; /* above 8192 points, two parts */
+  double *xyz = abi_sphere(count);
+  ProgressLog log;
+  size_t n_ref = 0, n = 0;
+  uint32_t *reference, *mesh;
+  moa_mesh m;
+  assert_int_equal(moa_set_param(ctx, "threads", 2), MOA_OK);
+  assert_int_equal(moa_set_points(ctx, xyz, count), MOA_OK);
+  reset_log(&log, -1);
+  assert_int_equal(moa_set_progress_callback(ctx, log_progress, &log), MOA_OK);
+  assert_int_equal(moa_run(ctx), MOA_OK);
+  assert_false(log.out_of_order);
+  assert_false(log.bad_fraction);
+  assert_false(log.wrong_thread);
+  assert_true(log.calls[MOA_STAGE_MESH] > 2); /* reports from inside the parallel pass too */
+  reference = abi_copy_mesh(ctx, &n_ref);
+
+  reset_log(&log, MOA_STAGE_MESH);
+  log.cancel_call = 2; /* the first report after the stage's start: inside the parallel pass */
+  assert_int_equal(moa_run(ctx), MOA_ERROR_CANCELLED);
+  assert_int_equal(log.calls[MOA_STAGE_MESH], 2);
+  assert_false(log.wrong_thread);
+  assert_int_equal(moa_get_mesh(ctx, &m), MOA_ERROR_BAD_STATE);
+
+  reset_log(&log, -1);
+  assert_int_equal(moa_run(ctx), MOA_OK);
+  mesh = abi_copy_mesh(ctx, &n);
+  assert_int_equal(n, n_ref);
+  assert_memory_equal(mesh, reference, 3 * n * sizeof(uint32_t));
+  m = abi_check_mesh(ctx, count);
+  assert_memory_equal(m.vertices, xyz, 3 * count * sizeof(double));
+  free(mesh);
   free(reference);
   free(xyz);
 }
@@ -338,6 +381,8 @@ int main(void) {
       cmocka_unit_test_setup_teardown(test_progress_reports_every_stage, setup_sphere,
                                       teardown_ctx),
       cmocka_unit_test_setup_teardown(test_cancel_each_stage, setup_sphere, teardown_ctx),
+      cmocka_unit_test_setup_teardown(test_parallel_pass_progress_and_cancel, setup_sphere,
+                                      teardown_ctx),
       cmocka_unit_test_setup_teardown(test_invalid_input_keeps_ctx_usable, setup_sphere,
                                       teardown_ctx),
       cmocka_unit_test_setup_teardown(test_reentrant_callback, setup_sphere, teardown_ctx),
