@@ -140,12 +140,13 @@ void CrossingIndex::grid_insert(uint32_t f, const Tri &t) {
     oversized_.push_back(f);
     return;
   }
+  const FaceGrid::Box box(lo, hi);
   int64_t x0 = int64_t(std::floor(lo.x / cell_)), x1 = int64_t(std::floor(hi.x / cell_));
   int64_t y0 = int64_t(std::floor(lo.y / cell_)), y1 = int64_t(std::floor(hi.y / cell_));
   int64_t z0 = int64_t(std::floor(lo.z / cell_)), z1 = int64_t(std::floor(hi.z / cell_));
   for (int64_t x = x0; x <= x1; ++x)
     for (int64_t y = y0; y <= y1; ++y)
-      for (int64_t z = z0; z <= z1; ++z) grid_.insert(cell_key(x, y, z), f);
+      for (int64_t z = z0; z <= z1; ++z) grid_.insert(cell_key(x, y, z), f, box);
 }
 
 void CrossingIndex::rebuild(MeshState &mesh) {
@@ -282,10 +283,13 @@ bool CrossingIndex::visit_near(const Vec3 &lo, const Vec3 &hi, MeshState &mesh, 
   int64_t x0 = int64_t(std::floor(lo.x / cell_)), x1 = int64_t(std::floor(hi.x / cell_));
   int64_t y0 = int64_t(std::floor(lo.y / cell_)), y1 = int64_t(std::floor(hi.y / cell_));
   int64_t z0 = int64_t(std::floor(lo.z / cell_)), z1 = int64_t(std::floor(hi.z / cell_));
+  // Faces whose boxes miss the query's are left out here, unlooked-at: every caller drops
+  // them anyway.
+  const FaceGrid::Box query(lo, hi);
   for (int64_t x = x0; x <= x1; ++x)
     for (int64_t y = y0; y <= y1; ++y)
       for (int64_t z = z0; z <= z1; ++z)
-        if (grid_.visit_live(cell_key(x, y, z), mesh, visit)) return true;
+        if (grid_.visit_live(cell_key(x, y, z), mesh, query, visit)) return true;
   return visit_oversized(mesh, visit);
 }
 
