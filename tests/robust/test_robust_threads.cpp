@@ -163,6 +163,27 @@ void concurrent_contexts_with_workers(void **) {
   }
 }
 
+// Clouds large enough for Algorithm 1's parallel first pass, whose parts grow on the worker
+// threads, two contexts at once: the same meshes as with one thread each.
+void parallel_pass_with_workers(void **) {
+  std::vector<Job> jobs(2);
+  jobs[0].points = ellipsoid(9000, 1, 1, 1);
+  jobs[1].points = ellipsoid(9000, 1, 2, 3);
+  std::vector<std::vector<std::uint32_t>> reference;
+  for (Job &job : jobs) {
+    reference.push_back(reference_mesh(job));
+    job.threads = 2;
+    job.runs = 1;
+  }
+  run_concurrently(jobs);
+  for (std::size_t j = 0; j < jobs.size(); ++j) {
+    if (!jobs[j].error.empty()) fail_msg("job %zu: %s", j, jobs[j].error.c_str());
+    assert_int_equal(jobs[j].statuses[0], MOA_OK);
+    assert_true(jobs[j].meshes[0] == reference[j]);
+    assert_int_equal(jobs[j].foreign_reports, 0);
+  }
+}
+
 // moa_last_error(NULL) is per thread: failures on other threads never show in a thread's slot.
 void error_slot_per_thread(void **) {
   constexpr int kThreads = 6, kRounds = 200;
@@ -224,6 +245,7 @@ int main(int argc, char **argv) {
   const CMUnitTest tests[] = {
       cmocka_unit_test(concurrent_contexts),
       cmocka_unit_test(concurrent_contexts_with_workers),
+      cmocka_unit_test(parallel_pass_with_workers),
       cmocka_unit_test(error_slot_per_thread),
       cmocka_unit_test(context_handed_between_threads),
   };
