@@ -18,9 +18,16 @@
 namespace moa {
 namespace {
 
-// Padding of every broad-phase box in work units (the cloud spans a unit diagonal), well above
-// float rounding so that Embree never misses a face the exact test would call a crossing.
+// Padding of every broad-phase box in work units (the cloud spans a unit diagonal): this, or a
+// tenth of the median spacing when that is smaller. A point far from the rest squeezes the
+// cloud into a corner of the unit box, and boxes padded by more than the spacing would each
+// cover much of the cloud: every crossing test would test every face.
 constexpr double kPad = 1e-5;
+// Embree sees the points in single precision, in a frame of its own: centred on the bulk of the
+// cloud (a far point cannot move that centre) with a unit of one grid cell, so rounding stays
+// a small fraction of the spacing however the cloud sits in its box. Its point queries are
+// widened by this share of their coordinates' magnitude, above that rounding.
+constexpr double kFloatSlack = 0x1p-19;
 constexpr int kMaxCellsPerFace = 64;
 // How many pending faces scanned one by one cost about as much as building one face into the
 // Embree scene (a box test takes nanoseconds, a face's share of a BVH build far more). Scans
@@ -98,13 +105,29 @@ RTCDevice shared_device() {
 }  // namespace
 
 CrossingIndex::CrossingIndex(const PointSet &points, double cell_size)
-    : points_(points), cell_(cell_size) {
-  vertices_.resize(points.size() * 3 + 4);  // Embree reads 16 bytes at the last vertex
+    : points_(points), cell_(cell_size), pad_(std::min(kPad, 0.05 * cell_size)) {
   const std::vector<Vec3> &placed = points.placed();
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    vertices_[3 * i] = float(placed[i].x);
-    vertices_[3 * i + 1] = float(placed[i].y);
-    vertices_[3 * i + 2] = float(placed[i].z);
+  // Embree's frame: the median of up to 1,024 points spread through the (Morton-ordered)
+  // cloud, one grid cell to the unit.
+  const std::size_t n = points.size(), step = std::max<std::size_t>(1, n / 1024);
+  std::vector<double> xs, ys, zs;
+  for (std::size_t i = 0; i < n; i += step) {
+    xs.push_back(placed[i].x);
+    ys.push_back(placed[i].y);
+    zs.push_back(placed[i].z);
+  }
+  auto median = [](std::vector<double> &v) {
+    std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
+    return v[v.size() / 2];
+  };
+  origin_ = {median(xs), median(ys), median(zs)};
+  unit_ = 1.0 / cell_size;
+  vertices_.resize(n * 3 + 4);  // Embree reads 16 bytes at the last vertex
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 p = in_frame(placed[i]);
+    vertices_[3 * i] = float(p.x);
+    vertices_[3 * i + 1] = float(p.y);
+    vertices_[3 * i + 2] = float(p.z);
   }
   device_ = shared_device();
 }
@@ -127,10 +150,10 @@ void CrossingIndex::release() {
 void CrossingIndex::bounds(const Tri &t, Vec3 &lo, Vec3 &hi) const {
   const std::vector<Vec3> &placed = points_.placed();
   const Vec3 &a = placed[t[0]], &b = placed[t[1]], &c = placed[t[2]];
-  lo = {std::min({a.x, b.x, c.x}) - kPad, std::min({a.y, b.y, c.y}) - kPad,
-        std::min({a.z, b.z, c.z}) - kPad};
-  hi = {std::max({a.x, b.x, c.x}) + kPad, std::max({a.y, b.y, c.y}) + kPad,
-        std::max({a.z, b.z, c.z}) + kPad};
+  lo = {std::min({a.x, b.x, c.x}) - pad_, std::min({a.y, b.y, c.y}) - pad_,
+        std::min({a.z, b.z, c.z}) - pad_};
+  hi = {std::max({a.x, b.x, c.x}) + pad_, std::max({a.y, b.y, c.y}) + pad_,
+        std::max({a.z, b.z, c.z}) + pad_};
 }
 
 void CrossingIndex::grid_insert(uint32_t f, const Tri &t) {
@@ -261,13 +284,15 @@ bool CrossingIndex::visit_near(const Vec3 &lo, const Vec3 &hi, MeshState &mesh, 
   // Committed faces: an Embree point query over the box's circumscribed sphere.
   if (scene_ && committed_ > 0) {
     found_.clear();
-    Vec3 c = midpoint(lo, hi);
+    const Vec3 c = in_frame(midpoint(lo, hi));
+    double radius = (norm(hi - lo) * 0.5 + pad_) * unit_;
+    radius += kFloatSlack * (std::max({std::fabs(c.x), std::fabs(c.y), std::fabs(c.z)}) + radius);
     RTCPointQuery pq;
     pq.x = float(c.x);
     pq.y = float(c.y);
     pq.z = float(c.z);
     pq.time = 0.f;
-    pq.radius = float(norm(hi - lo) * 0.5 + kPad);
+    pq.radius = float(radius);
     RTCPointQueryContext pctx;
     rtcInitPointQueryContext(&pctx);
     rtcPointQuery(static_cast<RTCScene>(scene_), &pq, &pctx, collect_point_query, &found_);
@@ -323,7 +348,7 @@ bool CrossingIndex::crosses(const Tri &t, double pad, MeshState &mesh,
       const Vec3 &p = points_.placed()[t[e]], &q = points_.placed()[t[(e + 1) % 3]];
       RTCRayHit rh{};
       // The segment, lengthened slightly at both ends so float rounding cannot shorten it.
-      Vec3 d = q - p, o = p - d * 1e-4;
+      const Vec3 d = (q - p) * unit_, o = in_frame(p) - d * 1e-4;
       rh.ray.org_x = float(o.x);
       rh.ray.org_y = float(o.y);
       rh.ray.org_z = float(o.z);

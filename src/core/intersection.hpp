@@ -64,8 +64,13 @@ class CrossingIndex {
   template <class Visit>
   bool visit_near(const Vec3 &lo, const Vec3 &hi, MeshState &mesh, Visit &&visit);
 
+  // A point in Embree's frame (see kFloatSlack in intersection.cpp).
+  Vec3 in_frame(const Vec3 &p) const { return (p - origin_) * unit_; }
+
   const PointSet &points_;
-  std::vector<float> vertices_;  // work coordinates, Embree's shared vertex buffer
+  Vec3 origin_{};
+  double unit_ = 1;
+  std::vector<float> vertices_;  // Embree's shared vertex buffer, in its frame
   void *device_ = nullptr;
   void *scene_ = nullptr;
   uint32_t committed_ = 0;                      // faces [0, committed_) are in the scene
@@ -74,6 +79,7 @@ class CrossingIndex {
   std::vector<uint32_t> scene_corners_;         // or else the live faces' corners, when compacted,
   std::vector<uint32_t> scene_faces_;           // and the face of each of the scene's primitives
   double cell_ = 0;
+  double pad_ = 0;  // of every broad-phase box (kPad in intersection.cpp)
   FaceGrid grid_;
   std::vector<uint32_t> oversized_;  // pending faces spanning too many cells
   double scan_debt_ = 0;             // pending faces scanned one by one since the last build

@@ -1,0 +1,100 @@
+// The crossing index (src/core/intersection.hpp) on a cloud that one far point squeezes into a
+// corner of its unit box: a flat grid, 1 apart, and a point ten million away. Its boxes must stay
+// local (before, each box's padding covered the whole grid, and every crossing test tested
+// every face), and Embree, in single precision, must still find the faces a triangle crosses.
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "core/intersection.hpp"
+#include "core/mesh_state.hpp"
+#include "core/point_set.hpp"
+
+// cmocka last: its macros clash with names in the standard headers.
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+extern "C" {  // this cmocka's header has no C++ guard of its own
+#include <cmocka.h>
+}
+
+namespace {
+
+using moa::Tri;
+using moa::Vec3;
+
+constexpr int kSide = 40;  // grid points per side
+
+struct SqueezedGrid {
+  std::vector<double> xyz;
+  std::vector<uint32_t> at;  // caller's index -> internal index
+  moa::PointSet points;
+
+  SqueezedGrid() {
+    for (int i = 0; i < kSide; ++i)
+      for (int j = 0; j < kSide; ++j) add({double(i), double(j), 0});
+    add({20.3, 20.2, 1});    // above the grid
+    add({20.3, 20.2, -1});   // below it
+    add({20.6, 20.7, 0.5});  // above, beside
+    add({20.4, 20.6, 0.8});  // above, beside
+    add({1e7, 0, 0});        // the far point
+    points = moa::prepare_points(xyz.data(), xyz.size() / 3);
+    at.resize(xyz.size() / 3);
+    for (uint32_t k = 0; k < points.size(); ++k) at[points.original[k]] = k;
+  }
+  void add(const Vec3 &p) { xyz.insert(xyz.end(), {p.x, p.y, p.z}); }
+  uint32_t grid(int i, int j) const { return at[uint32_t(i * kSide + j)]; }
+  uint32_t extra(int e) const { return at[uint32_t(kSide * kSide + e)]; }
+  double spacing() const { return moa::dist(points.work[grid(0, 0)], points.work[grid(0, 1)]); }
+};
+
+// Two triangles per grid square, all in the mesh; the index holds them in its Embree scene.
+void triangulate(const SqueezedGrid &g, moa::MeshState &mesh, moa::CrossingIndex &index) {
+  for (int i = 0; i + 1 < kSide; ++i)
+    for (int j = 0; j + 1 < kSide; ++j) {
+      mesh.add({g.grid(i, j), g.grid(i + 1, j), g.grid(i + 1, j + 1)});
+      mesh.add({g.grid(i, j), g.grid(i + 1, j + 1), g.grid(i, j + 1)});
+    }
+  index.add_all(mesh);
+}
+
+void boxes_stay_local(void **) {
+  SqueezedGrid g;
+  moa::MeshState mesh(g.points.size());
+  moa::CrossingIndex index(g.points, 2 * g.spacing());
+  triangulate(g, mesh, index);
+  // A box a quarter of the spacing wide around grid point (20, 20): the six faces around it,
+  // and no more than the faces of the squares beside them.
+  const Vec3 c = g.points.work[g.grid(20, 20)], h{0.125 * g.spacing(), 0.125 * g.spacing(), 0};
+  std::vector<uint32_t> found;
+  index.faces_in_box(c - h, c + h, mesh, found);
+  assert_true(found.size() >= 6);
+  assert_true(found.size() <= 24);  // of 3,042
+}
+
+void crossings_found_through_embree(void **) {
+  SqueezedGrid g;
+  moa::MeshState mesh(g.points.size());
+  moa::CrossingIndex index(g.points, 2 * g.spacing());
+  triangulate(g, mesh, index);
+  std::vector<uint32_t> near;
+  const double pad = 0.5 * g.spacing();
+  // Through the grid, inside square (20, 20): a crossing.
+  assert_true(index.crosses({g.extra(0), g.extra(1), g.extra(2)}, pad, mesh, near));
+  // Above it: no crossing, and a neighbourhood of a few squares.
+  near.clear();
+  assert_false(index.crosses({g.extra(0), g.extra(2), g.extra(3)}, pad, mesh, near));
+  assert_true(near.size() >= 2);
+  assert_true(near.size() <= 40);
+}
+
+}  // namespace
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(boxes_stay_local),
+      cmocka_unit_test(crossings_found_through_embree),
+  };
+  return cmocka_run_group_tests(tests, nullptr, nullptr);
+}
