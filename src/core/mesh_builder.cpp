@@ -210,9 +210,9 @@ class Builder {
 };
 
 // Parts of the parallel first pass: about kParts of them, each of kMinPartPoints to
-// kMaxPartPoints points. Many parts balance the threads' loads and keep each part's own
-// structures small; few parts leave less seam for the sequential pass over the whole cloud
-// (every part's state also costs a few tens of bytes per point of the whole cloud to set up).
+// kMaxPartPoints points. Many parts balance the threads' loads; few parts leave less seam for
+// the sequential pass over the whole cloud and cost less to set up (every part's state takes a
+// few tens of bytes per point of the whole cloud).
 // Fixed by the number of points alone: the mesh must not depend on the number of threads.
 constexpr std::size_t kParts = 16;
 constexpr std::size_t kMinPartPoints = 8192;
@@ -238,7 +238,17 @@ void grow_parts(GrowthState &g, const Partition &parts, const std::function<void
   std::mutex failure_mutex;
   const std::thread::id caller = std::this_thread::get_id();
   const double expected = 2.0 * double(g.points.size());
+  // TBB ends every task before parallel_for returns, but ThreadSanitizer cannot see that order
+  // inside an uninstrumented libtbb, and the tasks read the caller's context (parameters,
+  // points) that the caller may free right after the run. Each task's last act, a release on
+  // this counter, read with acquire below, shows it the order.
+  std::atomic<std::size_t> ended{0};
+  struct EndOfTask {
+    std::atomic<std::size_t> &ended;
+    ~EndOfTask() { ended.fetch_add(1, std::memory_order_release); }
+  };
   tbb::parallel_for(std::size_t(0), count, [&](std::size_t p) {
+    const EndOfTask end_of_task{ended};
     if (stop.load()) return;
     try {
       GrowthState local(g.points, g.nb, g.params, g.spacing, stats[p]);
@@ -264,6 +274,7 @@ void grow_parts(GrowthState &g, const Partition &parts, const std::function<void
       stop.store(true);
     }
   });
+  (void)ended.load(std::memory_order_acquire);  // the order, for ThreadSanitizer (above)
   if (failure) std::rethrow_exception(failure);
   // Within a part every face was oriented consistently with its neighbours, and faces of
   // different parts share no edge yet: added as they are, they keep their orientation classes.
