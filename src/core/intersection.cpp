@@ -13,6 +13,7 @@
 #include <mutex>
 #include <new>
 
+#include "core/morton.hpp"
 #include "core/predicates.hpp"
 
 namespace moa {
@@ -73,21 +74,10 @@ bool boxes_meet(const Vec3 &alo, const Vec3 &ahi, const Vec3 &blo, const Vec3 &b
          ahi.z >= blo.z && alo.z <= bhi.z;
 }
 
-// Spreads the low 21 bits of v to every third bit.
-uint64_t spread_bits(int64_t v) {
-  uint64_t x = uint64_t(v) & 0x1fffff;
-  x = (x | (x << 32)) & 0x1f00000000ffffull;
-  x = (x | (x << 16)) & 0x1f0000ff0000ffull;
-  x = (x | (x << 8)) & 0x100f00f00f00f00full;
-  x = (x | (x << 4)) & 0x10c30c30c30c30c3ull;
-  x = (x | (x << 2)) & 0x1249249249249249ull;
-  return x;
-}
-
 // A cell's Morton code: cells near each other get codes near each other, which the grid keeps
 // in nearby slots (face_grid.hpp).
 uint64_t cell_key(int64_t x, int64_t y, int64_t z) {
-  return (spread_bits(x) << 2) | (spread_bits(y) << 1) | spread_bits(z);
+  return morton_code(uint64_t(x), uint64_t(y), uint64_t(z));
 }
 
 // One Embree device for the whole process, made on first use and never released. Devices are

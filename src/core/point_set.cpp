@@ -11,6 +11,7 @@
 #include <numeric>
 #include <string>
 
+#include "core/morton.hpp"
 #include "core/predicates.hpp"
 #include "core/reconstruct.hpp"
 
@@ -19,16 +20,6 @@ namespace {
 
 // Beyond this magnitude squared distances overflow; the caller must rescale.
 constexpr double kMaxMagnitude = 1e150;
-
-std::uint64_t spread_bits(std::uint64_t v) {
-  v &= 0x1fffff;
-  v = (v | v << 32) & 0x1f00000000ffffULL;
-  v = (v | v << 16) & 0x1f0000ff0000ffULL;
-  v = (v | v << 8) & 0x100f00f00f00f00fULL;
-  v = (v | v << 4) & 0x10c30c30c30c30c3ULL;
-  v = (v | v << 2) & 0x1249249249249249ULL;
-  return v;
-}
 
 void check_finite(const double *xyz, std::size_t count) {
   for (std::size_t i = 0; i < count * 3; ++i) {
@@ -121,8 +112,7 @@ PointSet prepare_points(const double *xyz, std::size_t count) {
     auto q = [&](double v, double l) {
       return std::uint64_t(std::clamp((v - l) / extent * cells, 0.0, cells));
     };
-    std::uint64_t key =
-        spread_bits(q(p.x, lo.x)) | spread_bits(q(p.y, lo.y)) << 1 | spread_bits(q(p.z, lo.z)) << 2;
+    const std::uint64_t key = morton_code(q(p.x, lo.x), q(p.y, lo.y), q(p.z, lo.z));
     keyed[k] = {key, unique[k]};
   }
   tbb::parallel_sort(keyed.begin(), keyed.end());
