@@ -86,8 +86,9 @@ typedef int (*moa_progress_fn)(moa_stage stage, double fraction, void *user_data
  * caller passes sizeof(moa_stats) so older programs keep working. */
 typedef struct moa_stats {
   size_t input_points;        /* points given to moa_set_points */
-  size_t unique_points;       /* after merging exact duplicates */
-  size_t duplicate_points;    /* exact duplicates merged into their first occurrence */
+  size_t unique_points;       /* after merging duplicates */
+  size_t duplicate_points;    /* duplicates merged into their first occurrence: exact ones,
+                                 and near ones (near_duplicate_points) */
   size_t used_points;         /* unique points that are vertices of the mesh */
   size_t unused_points;       /* unique points left out of the mesh (outliers) */
   size_t triangles_mesh;      /* triangles made by Algorithm 1 */
@@ -115,6 +116,11 @@ typedef struct moa_stats {
   size_t boundary_edges_before; /* boundary edges after Algorithm 1, before the loop module */
   size_t smoothing_passes;    /* passes of the noisy-cloud smoothing; 0: the cloud did not look
                                  noisy (or the parameter smoothing is 0) */
+  size_t near_duplicate_points; /* of duplicate_points, those merged as near duplicates: in a
+                                 cloud given more than once (at least 20 % of the points have
+                                 their nearest neighbour within 0.3 % of the distance to their
+                                 tenth), each point within 3 % of that distance of its nearest
+                                 is merged onto the one given first; otherwise 0 */
 } moa_stats;
 
 /* Version of the library actually loaded, as "MAJOR.MINOR.PATCH". Never NULL. */

@@ -164,7 +164,9 @@ void write_stats(const Options &o, const moa_ctx *ctx, const moa_stats &s, size_
   j.value("total_ms", s.total_ms).value("intersection_ms", s.intersection_ms);
   j.value("threads", s.threads);
   j.value("input_points", s.input_points).value("unique_points", s.unique_points);
-  j.value("duplicate_points", s.duplicate_points).value("used_points", s.used_points);
+  j.value("duplicate_points", s.duplicate_points)
+      .value("near_duplicate_points", s.near_duplicate_points)
+      .value("used_points", s.used_points);
   j.value("unused_points", s.unused_points);
   j.value("triangles_mesh", s.triangles_mesh).value("triangles_loops", s.triangles_loops);
   j.value("triangles_removed", s.triangles_removed);

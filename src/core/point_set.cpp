@@ -53,7 +53,8 @@ void check_not_collinear(const double *xyz, const std::vector<uint32_t> &unique)
 
 }  // namespace
 
-PointSet prepare_points(const double *xyz, std::size_t count) {
+PointSet prepare_points(const double *xyz, std::size_t count,
+                        const std::vector<uint32_t> &merged) {
   if (count < 3)
     throw Error(MOA_ERROR_INVALID_INPUT,
                 "at least 3 points are needed, got " + std::to_string(count));
@@ -85,11 +86,19 @@ PointSet prepare_points(const double *xyz, std::size_t count) {
     unique.push_back(order[k]);
   }
   std::vector<uint32_t>().swap(order);
+  if (!merged.empty()) {
+    std::vector<char> drop(count, 0);
+    for (uint32_t i : merged) drop[i] = 1;
+    auto kept = std::stable_partition(unique.begin(), unique.end(),
+                                      [&](uint32_t i) { return drop[i] == 0; });
+    repeated.insert(repeated.end(), kept, unique.end());
+    unique.erase(kept, unique.end());
+  }
   ps.duplicates = repeated.size();
   if (unique.size() < 3)
     throw Error(MOA_ERROR_INVALID_INPUT,
                 "only " + std::to_string(unique.size()) +
-                    " distinct points after merging exact duplicates; at least 3 are needed");
+                    " distinct points after merging duplicates; at least 3 are needed");
 
   Vec3 lo = point_at(xyz, unique[0]), hi = lo;
   for (uint32_t i : unique) {

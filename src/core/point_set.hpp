@@ -22,7 +22,8 @@ struct PointSet {
   // smoothing.hpp); empty otherwise.
   std::vector<Vec3> raw_work;
   // Internal index -> caller's index (first occurrence); after the size() internal points, the
-  // caller's indices of the exact duplicates: a permutation of all the caller's points.
+  // caller's indices of the duplicates (exact, or merged near ones): a permutation of all the
+  // caller's points.
   std::vector<uint32_t> original;
   std::size_t input_count = 0;
   std::size_t duplicates = 0;
@@ -38,8 +39,10 @@ struct PointSet {
 };
 
 // Throws moa::Error(MOA_ERROR_INVALID_INPUT) with a message naming the problem. xyz must stay
-// valid and unchanged as long as the PointSet is used, except by an InternalOrder.
-PointSet prepare_points(const double *xyz, std::size_t count);
+// valid and unchanged as long as the PointSet is used, except by an InternalOrder. The caller's
+// points listed in `merged` (near_duplicates.hpp) are left out like exact duplicates.
+PointSet prepare_points(const double *xyz, std::size_t count,
+                        const std::vector<uint32_t> &merged = {});
 
 // Moves the caller's points into the internal (Morton) order for its lifetime, and back into
 // the caller's order when it ends, on unwinding too: the way back allocates nothing. The exact

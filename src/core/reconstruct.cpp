@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <optional>
 
 #ifdef __GLIBC__
 #include <malloc.h>
@@ -16,6 +17,7 @@
 
 #include "core/finish.hpp"
 #include "core/growth_state.hpp"
+#include "core/near_duplicates.hpp"
 #include "core/neighbors.hpp"
 #include "core/point_set.hpp"
 #include "core/smoothing.hpp"
@@ -70,22 +72,24 @@ std::unique_ptr<KdIndex> smooth_if_noisy(PointSet &points, const Params &params,
   return index;
 }
 
-Result run_stages(double *xyz, std::size_t count, const Params &params,
-                  const ProgressFn &progress) {
+// The stages once. Near duplicates (near_duplicates.hpp) show only in the neighbour lists: while
+// `merged` is empty they are looked for there, and if the cloud has them they go into `merged`
+// and the run stops (nothing returned), to be started again without them. The caller's points
+// are back in their order by then.
+std::optional<Result> run_stages_once(double *xyz, std::size_t count, const Params &params,
+                                      const std::function<void(moa_stage, double)> &report,
+                                      std::vector<uint32_t> &merged) {
   Result result;
   moa_stats &st = result.stats;
-  auto report = [&](moa_stage stage, double fraction) {
-    if (progress && progress(stage, std::clamp(fraction, 0.0, 1.0))) throw Cancelled();
-  };
-  auto total = Clock::now();
 
   auto t = Clock::now();
   report(MOA_STAGE_POINTS, 0.0);
-  PointSet points = prepare_points(xyz, count);
+  PointSet points = prepare_points(xyz, count, merged);
   InternalOrder ordered(points, xyz);
   st.input_points = count;
   st.unique_points = points.size();
   st.duplicate_points = points.duplicates;
+  st.near_duplicate_points = merged.size();
   report(MOA_STAGE_POINTS, 1.0);
   st.stage_ms[MOA_STAGE_POINTS] = ms_since(t);
 
@@ -103,6 +107,10 @@ Result run_stages(double *xyz, std::size_t count, const Params &params,
     });
     index.reset();
     st.stage_ms[MOA_STAGE_NEIGHBORS] = ms_since(t);
+    if (merged.empty()) {
+      merged = near_duplicates(points, nb);
+      if (!merged.empty()) return std::nullopt;
+    }
 
     GrowthState g(points, nb, params, median_spacing(nb), st);
 
@@ -138,8 +146,30 @@ Result run_stages(double *xyz, std::size_t count, const Params &params,
   st.unused_points = points.size() - st.used_points;
   report(MOA_STAGE_FINISH, 1.0);
   st.stage_ms[MOA_STAGE_FINISH] = ms_since(t);
-  st.total_ms = ms_since(total);
   return result;
+}
+
+Result run_stages(double *xyz, std::size_t count, const Params &params,
+                  const ProgressFn &progress) {
+  auto total = Clock::now();
+  // Reports never go back, not even when the stages start again without near duplicates.
+  moa_stage last_stage = MOA_STAGE_POINTS;
+  double last_fraction = 0;
+  auto report = [&](moa_stage stage, double fraction) {
+    fraction = std::clamp(fraction, 0.0, 1.0);
+    if (stage < last_stage || (stage == last_stage && fraction < last_fraction)) {
+      stage = last_stage;
+      fraction = last_fraction;
+    }
+    last_stage = stage;
+    last_fraction = fraction;
+    if (progress && progress(stage, fraction)) throw Cancelled();
+  };
+  std::vector<uint32_t> merged;
+  std::optional<Result> result = run_stages_once(xyz, count, params, report, merged);
+  if (!result) result = run_stages_once(xyz, count, params, report, merged);
+  result->stats.total_ms = ms_since(total);
+  return std::move(*result);
 }
 
 }  // namespace

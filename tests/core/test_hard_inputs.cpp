@@ -1,6 +1,6 @@
 // Property tests on inputs that are not well sampled: noise, random clumps and gaps, sheets
 // closer than the spacing, a slab thinner than the spacing, sharp random-sampled edges, stray
-// points in the volume around a surface. The reconstruction may leave holes here, but the
+// points in the volume around a surface, a cloud given twice. The reconstruction may leave holes here, but the
 // contract C1-C6 holds on every input.
 #include "core_harness.hpp"
 
@@ -121,6 +121,34 @@ std::string torus_outliers_failure(const Case &c) {
   return "";
 }
 
+// Every point given twice, the second copy rounded to single precision (a cloud joined from a
+// double and a float file): each pair becomes one point, the one given first, and the torus
+// closes. Without the merge a sphere so doubled fell apart (genus 9, 84 pieces).
+constexpr std::size_t kTwinTorusPoints = 3000;
+
+const Case &twin_torus_case() {
+  static const Case c = [] {
+    Points p = torus_random(kTwinTorusPoints, 1.0, 0.4, 38);
+    const std::size_t n = p.size();
+    for (std::size_t i = 0; i < n; ++i) p.push_back(double(float(p[i])));
+    return make_case("torus given twice, once in single precision", p, kTwinTorusPoints);
+  }();
+  return c;
+}
+
+std::string twin_torus_failure(const Case &c) {
+  const std::string closed = closed_failure(c, 1, 1.0);
+  if (!closed.empty()) return closed;
+  for (std::uint32_t v : c.run.triangles)
+    if (v >= kTwinTorusPoints)
+      return c.name + ": the second copy of point " + std::to_string(v - kTwinTorusPoints) +
+             " is a vertex";
+  if (c.run.stats.near_duplicate_points != kTwinTorusPoints)
+    return c.name + ": " + std::to_string(c.run.stats.near_duplicate_points) +
+           " near duplicates counted, expected " + std::to_string(kTwinTorusPoints);
+  return "";
+}
+
 }  // namespace
 
 MOA_CONTRACT_TESTS(noisy_sphere)
@@ -131,9 +159,14 @@ MOA_CONTRACT_TESTS(parallel_sheets)
 MOA_CONTRACT_TESTS(thin_slab)
 MOA_CONTRACT_TESTS(octahedron_samples)
 MOA_CONTRACT_TESTS(torus_outliers)
+MOA_CONTRACT_TESTS(twin_torus)
 
 static void test_torus_outliers_left_out(void **) {
   MOA_EXPECT(torus_outliers_failure(torus_outliers_case()));
+}
+
+static void test_twin_torus_merged_and_closed(void **) {
+  MOA_EXPECT(twin_torus_failure(twin_torus_case()));
 }
 
 int main(void) {
@@ -144,6 +177,8 @@ int main(void) {
       MOA_CONTRACT_ENTRIES(octahedron_samples),
       MOA_CONTRACT_ENTRIES(torus_outliers),
       cmocka_unit_test(test_torus_outliers_left_out),
+      MOA_CONTRACT_ENTRIES(twin_torus),
+      cmocka_unit_test(test_twin_torus_merged_and_closed),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

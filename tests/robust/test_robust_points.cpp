@@ -238,19 +238,38 @@ void exact_duplicates(void **) {
   moa_ctx_destroy(ctx);
 }
 
-// Points one ulp or a nanometre apart are distinct points: no merge, no crash, C1-C5 kept.
+// Points one ulp or a nanometre apart: a few such pairs are distinct points, every one a
+// vertex; a cloud full of them (half its points given twice) is merged, each pair onto the
+// point given first. No crash and C1-C5 kept either way.
 void near_duplicates(void **) {
   const Points unit = robust::sphere(150);
+  const std::size_t n = unit.size() / 3;
   moa_ctx *ctx = robust::new_ctx();
   for (double gap : {0.0, 1e-12, 1e-9}) {
-    Points p = unit;
-    for (std::size_t i = 0; i < unit.size(); i += 6)  // every other point gets a twin
-      p.insert(p.end(), {gap == 0 ? std::nextafter(unit[i], 2.0) : unit[i] + gap, unit[i + 1],
-                         unit[i + 2]});
-    assert_true(EXPECT_RUN_OK(ctx, p) > 0);
+    auto twin = [&](Points &p, std::size_t i) {
+      p.insert(p.end(), {gap == 0 ? std::nextafter(unit[3 * i], 2.0) : unit[3 * i] + gap,
+                         unit[3 * i + 1], unit[3 * i + 2]});
+    };
+    Points few = unit;
+    for (std::size_t i = 0; i < 3; ++i) twin(few, 50 * i);
+    assert_true(EXPECT_RUN_OK(ctx, few) > 0);
     moa_stats st;
     assert_int_equal(moa_get_stats(ctx, &st, sizeof st), MOA_OK);
     assert_int_equal(st.duplicate_points, 0);
+    assert_int_equal(st.near_duplicate_points, 0);
+    assert_int_equal(st.used_points, n + 3);  // every point a vertex
+
+    Points many = unit;
+    for (std::size_t i = 0; i < n; i += 2) twin(many, i);
+    assert_true(EXPECT_RUN_OK(ctx, many) > 0);
+    assert_int_equal(moa_get_stats(ctx, &st, sizeof st), MOA_OK);
+    assert_int_equal(st.unique_points, n);
+    assert_int_equal(st.duplicate_points, n / 2);
+    assert_int_equal(st.near_duplicate_points, n / 2);
+    moa_mesh mesh;
+    assert_int_equal(moa_get_mesh(ctx, &mesh), MOA_OK);
+    for (std::size_t i = 0; i < 3 * mesh.triangle_count; ++i)
+      if (mesh.triangles[i] >= n) fail_msg("a second copy (index %u) is used", mesh.triangles[i]);
   }
   moa_ctx_destroy(ctx);
 }
