@@ -2,9 +2,9 @@
 // one sample, one of them rounded to single precision or moved slightly by a registration) has
 // a second sample at every site, a small fraction of the spacing away. MOA then meets a fan of
 // needle-short segments at every point, and the surface falls apart: a 10,000-point sphere
-// given twice, each copy moved by 10^-7 to 10^-2 spacings, kept 74-5,233 boundary edges. Such
-// pairs are merged into one point, the caller's first, as exact duplicates are. A few close
-// pairs by chance (a random sample has some) mesh well and stay.
+// given twice, the copy moved by 10^-7 to 10^-3 of the nearest-neighbour distance, kept 74 to
+// 5,233 boundary edges. Such pairs are merged into one point, the caller's first, as exact
+// duplicates are. A few close pairs by chance (a random sample has some) mesh well and stay.
 #pragma once
 
 #include <cstdint>
