@@ -1,6 +1,7 @@
 // Calls in awkward orders and places: cancellation at every progress report, a callback that
 // calls back in, one context's run inside another's callback, repeated runs, and every
 // parameter at the ends of its range. Complements tests/abi, which checks each call on its own.
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -85,6 +86,54 @@ void cancel_at_every_report(void **) {
     assert_int_equal(stages_seen, (1 << MOA_STAGE_COUNT) - 1);
     moa_ctx_destroy(ctx);
   }
+}
+
+struct Ordered {
+  int stage = -1;
+  double fraction = 0;
+  long count = 0, cancel_at = -1;
+  bool backwards = false;
+};
+
+int check_order(moa_stage stage, double fraction, void *user_data) {
+  auto *o = static_cast<Ordered *>(user_data);
+  if (int(stage) < o->stage || (int(stage) == o->stage && fraction < o->fraction))
+    o->backwards = true;
+  o->stage = int(stage);
+  o->fraction = fraction;
+  return o->count++ == o->cancel_at;
+}
+
+// A cloud given twice (the copy in single precision) runs its first stages twice, the second
+// time without the copies (near_duplicates.hpp): the reports still never go back, a cancel at
+// any of them, in either pass, leaves the context usable, and the mesh is that of the cloud
+// given once.
+void cancel_in_a_cloud_given_twice(void **) {
+  const Points once = holed_sphere();
+  Points twice = once;
+  for (double v : once) twice.push_back(double(float(v)));
+  moa_ctx *ctx = robust::new_ctx();
+  EXPECT_RUN_OK(ctx, once);
+  const std::vector<std::uint32_t> reference = triangles_of(ctx);
+  Ordered order;
+  assert_int_equal(moa_set_progress_callback(ctx, check_order, &order), MOA_OK);
+  EXPECT_RUN_OK(ctx, twice);
+  assert_false(order.backwards);
+  assert_true(triangles_of(ctx) == reference);
+  moa_stats st;
+  assert_int_equal(moa_get_stats(ctx, &st, sizeof st), MOA_OK);
+  assert_int_equal(st.near_duplicate_points, once.size() / 3);
+  const long total = order.count;
+  for (long k = 0; k < total; k += std::max(1L, total / 40)) {
+    order = Ordered{};
+    order.cancel_at = k;
+    EXPECT_FAILURE(ctx, moa_run(ctx), MOA_ERROR_CANCELLED, "moa_run", "cancel");
+    assert_false(order.backwards);
+  }
+  order = Ordered{};
+  assert_int_equal(moa_run(ctx), MOA_OK);
+  assert_true(triangles_of(ctx) == reference);
+  moa_ctx_destroy(ctx);
 }
 
 // A callback that keeps cancelling: every run is cancelled, none leaves a mesh behind.
@@ -241,6 +290,7 @@ int main() {
   const CMUnitTest tests[] = {
       cmocka_unit_test(cancel_at_every_report),
       cmocka_unit_test(cancel_again_and_again),
+      cmocka_unit_test(cancel_in_a_cloud_given_twice),
       cmocka_unit_test(callback_meddles),
       cmocka_unit_test(nested_contexts),
       cmocka_unit_test(repeated_runs),
