@@ -1,7 +1,8 @@
 #include "core/finish.hpp"
 
 #include <algorithm>
-#include <numeric>
+
+#include "core/disjoint_sets.hpp"
 
 namespace moa {
 namespace {
@@ -34,24 +35,21 @@ bool share_other_vertex(const Tri &a, const Tri &b, uint32_t v) {
 std::size_t enforce_single_fans(std::size_t nv, const std::vector<Tri> &tris,
                                 std::vector<char> &alive) {
   std::size_t removed = 0;
-  std::vector<uint32_t> fan, size;  // reused from vertex to vertex
+  DisjointSets fan;  // reused from vertex to vertex, as is size
+  std::vector<uint32_t> size;
   for (bool changed = true; changed;) {
     changed = false;
     Incidence inc(nv, tris, alive);
     for (uint32_t v = 0; v < nv; ++v) {
       uint32_t b = inc.start[v], e = inc.start[v + 1], n = e - b;
       if (n < 2) continue;
-      fan.resize(n);
-      std::iota(fan.begin(), fan.end(), 0u);
-      auto root = [&](uint32_t x) {
-        while (fan[x] != x) x = fan[x] = fan[fan[x]];
-        return x;
-      };
+      fan.reset(n);
+      auto root = [&](uint32_t x) { return fan.root(x); };
       for (uint32_t i = 0; i < n; ++i)
         for (uint32_t j = i + 1; j < n; ++j)
           if (alive[inc.faces[b + i]] && alive[inc.faces[b + j]] &&
               share_other_vertex(tris[inc.faces[b + i]], tris[inc.faces[b + j]], v))
-            fan[root(i)] = root(j);
+            fan.join(i, j);
       size.assign(n, 0);
       for (uint32_t i = 0; i < n; ++i) ++size[root(i)];
       uint32_t best = 0;
@@ -75,12 +73,8 @@ std::size_t enforce_single_fans(std::size_t nv, const std::vector<Tri> &tris,
 std::size_t orient_outward(const PointSet &points, std::vector<Tri> &tris,
                            const std::vector<char> &alive) {
   const std::size_t nf = tris.size();
-  std::vector<uint32_t> comp(nf);
-  std::iota(comp.begin(), comp.end(), 0u);
-  auto root = [&](uint32_t x) {
-    while (comp[x] != x) x = comp[x] = comp[comp[x]];
-    return x;
-  };
+  DisjointSets comp(nf);
+  auto root = [&](uint32_t x) { return comp.root(x); };
   std::size_t boundary = 0;
   {
     Incidence inc(points.size(), tris, alive);
@@ -94,7 +88,7 @@ std::size_t orient_outward(const PointSet &points, std::vector<Tri> &tris,
           if (h == f) continue;
           const Tri &t = tris[h];
           if (t[0] == w || t[1] == w || t[2] == w) {
-            comp[root(f)] = root(h);
+            comp.join(f, h);
             shared = true;
           }
         }

@@ -13,6 +13,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "core/disjoint_sets.hpp"
 #include "core/growth_state.hpp"
 #include "core/hole_patch.hpp"
 #include "core/neighbors.hpp"
@@ -979,24 +980,21 @@ class LoopFiller {
 // largest, opening one hole where a loop could not be closed around a pinch.
 std::size_t open_pinched_vertices(GrowthState &g) {
   std::size_t removed = 0;
-  std::vector<uint32_t> faces, group;
+  std::vector<uint32_t> faces;
+  DisjointSets group;
   for (uint32_t v = 0; v < g.points.size(); ++v) {
     if (g.mesh.fan_count(v) < 2) continue;
     const FacesAround around = g.mesh.faces_at(v);
     faces.assign(around.begin(), around.end());
     const std::size_t n = faces.size();
-    group.resize(n);
-    for (std::size_t i = 0; i < n; ++i) group[i] = uint32_t(i);
-    auto root = [&](uint32_t x) {
-      while (group[x] != x) x = group[x] = group[group[x]];
-      return x;
-    };
+    group.reset(n);
+    auto root = [&](uint32_t x) { return group.root(x); };
     for (std::size_t i = 0; i < n; ++i)
       for (std::size_t j = i + 1; j < n; ++j) {
         const Tri &a = g.mesh.stored(faces[i]), &b = g.mesh.stored(faces[j]);
         int shared = 0;
         for (uint32_t x : a) shared += (x == b[0] || x == b[1] || x == b[2]);
-        if (shared >= 2) group[root(uint32_t(i))] = root(uint32_t(j));
+        if (shared >= 2) group.join(uint32_t(i), uint32_t(j));
       }
     std::vector<uint32_t> size(n, 0);
     for (std::size_t i = 0; i < n; ++i) ++size[root(uint32_t(i))];

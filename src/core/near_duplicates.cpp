@@ -7,6 +7,7 @@
 
 #include <algorithm>
 
+#include "core/disjoint_sets.hpp"
 #include "core/mesh_state.hpp"
 
 namespace moa {
@@ -30,23 +31,18 @@ std::vector<uint32_t> near_duplicates(const PointSet &points, const Neighborhood
   for (uint32_t i = 0; i < n; ++i) copied += within(i, kCopyDistance);
   if (double(copied) < kCopiedShare * double(n)) return {};
 
-  std::vector<uint32_t> group(n);
-  for (uint32_t i = 0; i < n; ++i) group[i] = i;
-  auto root = [&](uint32_t x) {
-    while (group[x] != x) x = group[x] = group[group[x]];
-    return x;
-  };
+  DisjointSets group(n);
   for (uint32_t i = 0; i < n; ++i)
-    if (within(i, kNearDuplicateDistance)) group[root(i)] = root(nb.of(i)[0]);
+    if (within(i, kNearDuplicateDistance)) group.join(i, nb.of(i)[0]);
   // Each group keeps the member the caller gave first.
   std::vector<uint32_t> keep(n, kNone);
   for (uint32_t i = 0; i < n; ++i) {
-    uint32_t &k = keep[root(i)];
+    uint32_t &k = keep[group.root(i)];
     if (k == kNone || points.original[i] < points.original[k]) k = i;
   }
   std::vector<uint32_t> merged;
   for (uint32_t i = 0; i < n; ++i)
-    if (keep[root(i)] != i) merged.push_back(points.original[i]);
+    if (keep[group.root(i)] != i) merged.push_back(points.original[i]);
   if (n - merged.size() < 4) return {};
   std::sort(merged.begin(), merged.end());
   return merged;
