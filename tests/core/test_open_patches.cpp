@@ -2,6 +2,8 @@
 // (one boundary loop, Euler characteristic 1) that uses every point; the true border stays open.
 #include "core_harness.hpp"
 
+#include <cmath>
+
 // cmocka last: its macros (fail, ...) clash with names in the standard headers.
 #include <stdarg.h>
 #include <stddef.h>
@@ -54,8 +56,37 @@ const Case &tetrahedron_case() {
   return c;
 }
 
+// A flat ring (radii 0.2 and 1) sampled at random: its hole, about 20 spacings across, is a
+// border (a hole drilled through a plate), not a gap to fill. Its loop is short next to the
+// ring, which once let the loop module's rule for tears along creases fill it with faces as
+// long as the hole is wide.
+const Case &ring_case() {
+  static const Case c = [] {
+    Rng rng(25);
+    Points p;
+    for (int i = 0; i < 8000; ++i) {
+      const double r = std::sqrt(rng.uniform(0.04, 1.0)), t = rng.uniform(0, 2 * M_PI);
+      p.insert(p.end(), {r * std::cos(t), r * std::sin(t), 0.0});
+    }
+    return make_case("flat ring, random", p);
+  }();
+  return c;
+}
+
+// One piece with two boundary loops and Euler characteristic 0 (a ring), every point used.
+std::string ring_failure(const Case &c) {
+  const std::string contract = contract_failure(c);
+  if (!contract.empty()) return contract;
+  const ContractReport &r = c.report;
+  if (r.components != 1 || r.boundary_loops != 2 || r.euler_characteristic != 0 ||
+      r.vertices_used != c.points.size() / 3)
+    return c.name + ": not a ring using every point\n" + r.describe();
+  return "";
+}
+
 }  // namespace
 
+MOA_CONTRACT_TESTS(ring)
 MOA_CONTRACT_TESTS(three_points)
 MOA_CONTRACT_TESTS(tetrahedron)
 MOA_CONTRACT_TESTS(flat_grid)
@@ -69,6 +100,7 @@ static void test_hemisphere_disk(void **) { MOA_EXPECT(disk_failure(hemisphere_c
 static void test_saddle_disk(void **) { MOA_EXPECT(disk_failure(saddle_case())); }
 static void test_three_points_disk(void **) { MOA_EXPECT(disk_failure(three_points_case())); }
 static void test_tetrahedron_closed(void **) { MOA_EXPECT(closed_failure(tetrahedron_case(), 0)); }
+static void test_ring_keeps_its_hole(void **) { MOA_EXPECT(ring_failure(ring_case())); }
 
 int main(void) {
   const struct CMUnitTest tests[] = {
@@ -78,6 +110,7 @@ int main(void) {
       MOA_CONTRACT_ENTRIES(saddle),           cmocka_unit_test(test_saddle_disk),
       MOA_CONTRACT_ENTRIES(three_points),     cmocka_unit_test(test_three_points_disk),
       MOA_CONTRACT_ENTRIES(tetrahedron),      cmocka_unit_test(test_tetrahedron_closed),
+      MOA_CONTRACT_ENTRIES(ring),             cmocka_unit_test(test_ring_keeps_its_hole),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
