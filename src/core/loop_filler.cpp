@@ -17,7 +17,6 @@
 #include "core/growth_state.hpp"
 #include "core/hole_patch.hpp"
 #include "core/neighbors.hpp"
-#include "core/pca.hpp"
 
 namespace moa {
 namespace {
@@ -62,15 +61,16 @@ constexpr double kShortcutRatio = 1.3;
 // Vertices each way over which the loop is smoothed before its waists are measured.
 constexpr std::size_t kWaistSmoothing = 3;
 // A loop at most this share of the square root of its surface's vertex count long, and at most
-// kSmallLoopWidths times the hole width wide, is a hole (see classify_and_pool), unless it is
-// flat: its thickness over its length (the square root of the smallest over the largest
-// spread of its vertices) below kFlatLoop. A tear along a crease bends across it; a round hole
-// in a plate lies in a plane (0.000 on a random sample of a flat ring; loops of the quality
-// sweep that this rule closed: 0.003-0.018 on building.ply and a noisy contour stack, 0.02-0.4
-// elsewhere).
+// kSmallLoopWidths times the hole width wide, is a hole torn along a crease (see
+// classify_and_pool) when it bends across one: the planes at two of its vertices at most two
+// steps apart stand at least kCreaseAngle apart. A round hole through a smooth part of the
+// surface is a border however short, and its planes turn gradually: 0 degrees on a flat ring,
+// at most 20 within two steps on a sphere and a cylinder with holes 8-20 spacings across
+// (47 across the whole loop). The loops of the quality sweep that this rule closed turn by
+// 25-90 degrees within two steps, but for 57 of building.ply's 654, which now stay open.
 constexpr double kSmallLoopShare = 0.5;
 constexpr double kSmallLoopWidths = 3.0;
-constexpr double kFlatLoop = 0.005;
+constexpr double kCreaseAngle = 25.0;
 // Longest loop the last-resort patch triangulates (its cost grows with the cube of the length).
 constexpr std::size_t kMaxPatchedLoop = 96;
 // Rings of faces a hole may lose so that a wider hole can be patched, and the total number of
@@ -748,11 +748,16 @@ class LoopFiller {
     return std::sqrt(width);
   }
 
-  // Whether a loop lies in a plane (kFlatLoop).
-  bool flat(const std::vector<uint32_t> &loop) const {
-    const PcaFrame f =
-        pca_frame(g_.points.work, loop[0], loop.data() + 1, unsigned(loop.size() - 1));
-    return f.spread[0] < kFlatLoop * kFlatLoop * f.spread[2];
+  // Whether a loop bends across a crease (kCreaseAngle).
+  bool bends(const std::vector<uint32_t> &loop) const {
+    const std::size_t n = loop.size();
+    std::vector<Vec3> normals;
+    for (uint32_t v : loop) normals.push_back(plane_normal(g_.points, g_.nb, v));
+    const double cos_crease = std::cos(kCreaseAngle * M_PI / 180);
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t step : {1, 2})
+        if (std::fabs(dot(normals[i], normals[(i + step) % n])) <= cos_crease) return true;
+    return false;
   }
 
   // A loop is a hole, to be filled, when it is narrow (at most hole_size spacings wide, or its
@@ -788,7 +793,7 @@ class LoopFiller {
           width <= hole_width ||
           widest_waist(loop.vertices) <= g_.params.hole_size * std::min(spacing, sparse_spacing);
       const bool small = double(n) <= kSmallLoopShare * std::sqrt(surface_vertices) &&
-                         width <= kSmallLoopWidths * hole_width && !flat(loop.vertices);
+                         width <= kSmallLoopWidths * hole_width && bends(loop.vertices);
       loop.fillable = g_.params.solid != 0 || narrow || small;
     }
     // Candidates of a loop: its own vertices, and the neighbours of its vertices that lie on

@@ -73,6 +73,21 @@ const Case &ring_case() {
   return c;
 }
 
+// A random sphere with a round hole about 20 spacings across: a disk, whose rim is curved
+// (its vertices' planes differ by up to about 40 degrees), where the rim of a tear along a
+// crease bends by 50 degrees and more.
+const Case &holed_sphere_case() {
+  static const Case c = [] {
+    const Points sphere = sphere_random(10000, 1.0, 26);
+    Points p;
+    for (std::size_t i = 0; i < sphere.size(); i += 3)
+      if (std::hypot(sphere[i], sphere[i + 1], sphere[i + 2] - 1.0) > 0.35)
+        p.insert(p.end(), {sphere[i], sphere[i + 1], sphere[i + 2]});
+    return make_case("random sphere with a round hole", p);
+  }();
+  return c;
+}
+
 // One piece with two boundary loops and Euler characteristic 0 (a ring), every point used.
 std::string ring_failure(const Case &c) {
   const std::string contract = contract_failure(c);
@@ -87,6 +102,7 @@ std::string ring_failure(const Case &c) {
 }  // namespace
 
 MOA_CONTRACT_TESTS(ring)
+MOA_CONTRACT_TESTS(holed_sphere)
 MOA_CONTRACT_TESTS(three_points)
 MOA_CONTRACT_TESTS(tetrahedron)
 MOA_CONTRACT_TESTS(flat_grid)
@@ -101,6 +117,7 @@ static void test_saddle_disk(void **) { MOA_EXPECT(disk_failure(saddle_case()));
 static void test_three_points_disk(void **) { MOA_EXPECT(disk_failure(three_points_case())); }
 static void test_tetrahedron_closed(void **) { MOA_EXPECT(closed_failure(tetrahedron_case(), 0)); }
 static void test_ring_keeps_its_hole(void **) { MOA_EXPECT(ring_failure(ring_case())); }
+static void test_holed_sphere_disk(void **) { MOA_EXPECT(disk_failure(holed_sphere_case())); }
 
 int main(void) {
   const struct CMUnitTest tests[] = {
@@ -111,6 +128,7 @@ int main(void) {
       MOA_CONTRACT_ENTRIES(three_points),     cmocka_unit_test(test_three_points_disk),
       MOA_CONTRACT_ENTRIES(tetrahedron),      cmocka_unit_test(test_tetrahedron_closed),
       MOA_CONTRACT_ENTRIES(ring),             cmocka_unit_test(test_ring_keeps_its_hole),
+      MOA_CONTRACT_ENTRIES(holed_sphere),     cmocka_unit_test(test_holed_sphere_disk),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
