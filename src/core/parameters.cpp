@@ -57,8 +57,9 @@ const ParamRow kRows[] = {
      "width is the largest distance from one of its vertices to the nearest vertex a "
      "quarter of the loop away, so a long narrow gap is a hole and an open scan's rim, as "
      "wide as the surface, a border. A loop up to 3 times as wide is a hole too when it is "
-     "shorter than half the square root of its surface's vertex count (a tear in a large "
-     "surface, not the rim around it)",
+     "shorter than half the square root of its surface's vertex count and bends across a "
+     "crease (a tear in a large surface, not the rim around it, nor a round hole through a "
+     "smooth part of it)",
      0, 1e9, false, &Params::hole_size},
     {"solid",
      "1 closes every hole whatever its size (the paper's solid models); 0 keeps large "
