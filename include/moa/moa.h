@@ -116,11 +116,11 @@ typedef struct moa_stats {
   size_t boundary_edges_before; /* boundary edges after Algorithm 1, before the loop module */
   size_t smoothing_passes;    /* passes of the noisy-cloud smoothing; 0: the cloud did not look
                                  noisy (or the parameter smoothing is 0) */
-  size_t near_duplicate_points; /* of duplicate_points, those merged as near duplicates: in a
-                                 cloud given more than once (at least 20 % of the points have
-                                 their nearest neighbour within 0.3 % of the distance to their
-                                 tenth), each point within 3 % of that distance of its nearest
-                                 is merged onto the one given first; otherwise 0 */
+  size_t near_duplicate_points; /* of duplicate_points, those merged as near duplicates onto
+                                 the point given first: copies of points given again nearly
+                                 in place, or jittered by up to about a third of the
+                                 nearest-neighbour distance, in the whole cloud or in a region
+                                 of it (two scans overlapping); 0 in a cloud given once */
 } moa_stats;
 
 /* Version of the library actually loaded, as "MAJOR.MINOR.PATCH". Never NULL. */
