@@ -37,6 +37,11 @@ constexpr double kMinRoughness = 0.03;
 // points leave a thousand boundary edges where the smoothed copy leaves 382); the noisy clouds
 // measured give 0.037 (ball.ply) to 0.69.
 constexpr double kFlatFinestScale = 0.02;
+// Or the finest neighbourhood is far flatter than the next: two concentric spheres 3-5
+// nearest-neighbour distances apart give 0.021-0.024 at 10 points and 0.56-0.76 at 20, where
+// 20 points reach the other sphere. On a clean sheet 20 points are at most 2.6 times rougher
+// than 10 (curvature alone: about 1.4 times), and on a noisy one smoother.
+constexpr double kFarSheetJump = 3.0;
 
 // Clouds sampled along lines (neighbors.hpp: contour stacks, scanner stripes) whose points
 // scatter off their lines: the scatter that matters is set against the short steps along a
@@ -226,9 +231,9 @@ NoiseEstimate estimate_noise(const KdIndex &index) {
   // Finest neighbourhoods that are flat have no scatter that matters, however rough the next
   // size looks: what 20 points add to 10 there is the far sheet of a thin wall (a plate or a
   // pipe two or three spacings thick), and smoothing would fold the two sheets into one.
-  est.small_scale = medians[0] >= 0 && medians[0] <= kFlatFinestScale
-                        ? medians[0]
-                        : std::max(medians[0], medians[1]);
+  const bool finest_alone = medians[0] >= 0 && (medians[0] <= kFlatFinestScale ||
+                                                 medians[1] > kFarSheetJump * medians[0]);
+  est.small_scale = finest_alone ? medians[0] : std::max(medians[0], medians[1]);
   est.large_scale = est.small_scale;
   for (std::size_t c = kSmallScales; c < kScaleCount; ++c)
     if (medians[c] >= 0 && medians[c] < est.large_scale) {

@@ -242,6 +242,43 @@ void test_stray_points_left_out(void **) {
   assert_int_equal(c.run.stats.unused_points, 50);
 }
 
+// A hollow ball: two concentric random spheres (radii 1 and 1.157, 6000 points in all, each
+// sphere as dense as the other) 4.8 nearest-neighbour distances apart. A point's 10 nearest lie
+// on its own sphere, its 20 nearest reach the other, so the 20-point neighbourhoods look far
+// rougher than the 10-point ones, as a noisy cloud's 10-point ones do; smoothed as noise, the
+// two spheres became one surface zigzagging between them (1 component, 70 % of its faces
+// joining the spheres). Clean, they are two closed spheres.
+constexpr double kInnerRadius = 1.0, kOuterRadius = 1.157;
+
+const Case &hollow_ball_case() {
+  static const Case c = [] {
+    const std::size_t total = 6000;
+    const std::size_t inner = std::size_t(double(total) / (1 + kOuterRadius * kOuterRadius));
+    Points p = sphere_random(inner, kInnerRadius, 93);
+    const Points outer = sphere_random(total - inner, kOuterRadius, 94);
+    p.insert(p.end(), outer.begin(), outer.end());
+    return make_case("hollow ball", p);
+  }();
+  return c;
+}
+
+void test_hollow_ball_is_not_noisy(void **) {
+  const moa::NoiseEstimate e = estimate_of(hollow_ball_case().points);
+  if (e.noisy)
+    fail_msg("a hollow ball looked noisy: %.3f at 10-20 points, %.3f at %u", e.small_scale,
+             e.large_scale, e.smoothing_k);
+}
+
+// Two closed spheres of genus 0, every point used, no face joining them.
+void test_hollow_ball_two_spheres(void **) {
+  const Case &c = hollow_ball_case();
+  const ContractReport &r = c.report;
+  if (!r.closed() || r.components != 2 || r.genus_sum != 0 ||
+      r.vertices_used != c.points.size() / 3)
+    fail_msg("%s: not two closed spheres using every point\n%s", c.name.c_str(),
+             r.describe().c_str());
+}
+
 void test_rough_sphere_closed(void **) { MOA_EXPECT(closed_failure(rough_sphere_case(), 0)); }
 void test_rough_genus3_closed(void **) { MOA_EXPECT(closed_failure(rough_genus3_case(), 3)); }
 
@@ -261,6 +298,7 @@ MOA_CONTRACT_TESTS(rough_torus)
 MOA_CONTRACT_TESTS(rough_genus3)
 MOA_CONTRACT_TESTS(rough_stack)
 MOA_CONTRACT_TESTS(rough_flat_ellipsoid)
+MOA_CONTRACT_TESTS(hollow_ball)
 
 int main(void) {
   const struct CMUnitTest tests[] = {
@@ -279,6 +317,8 @@ int main(void) {
       cmocka_unit_test(test_rough_stack_closed),
       cmocka_unit_test(test_rough_flat_ellipsoid_closed),
       cmocka_unit_test(test_noisy_cube_sample_closed),
+      cmocka_unit_test(test_hollow_ball_is_not_noisy),
+      cmocka_unit_test(test_hollow_ball_two_spheres),
       MOA_CONTRACT_ENTRIES(rough_hemisphere),
       MOA_CONTRACT_ENTRIES(rough_cube),
       MOA_CONTRACT_ENTRIES(rough_sphere),
@@ -286,6 +326,7 @@ int main(void) {
       MOA_CONTRACT_ENTRIES(rough_genus3),
       MOA_CONTRACT_ENTRIES(rough_stack),
       MOA_CONTRACT_ENTRIES(rough_flat_ellipsoid),
+      MOA_CONTRACT_ENTRIES(hollow_ball),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
