@@ -78,8 +78,10 @@ typedef enum moa_stage {
   MOA_STAGE_COUNT = 5
 } moa_stage;
 
-/* Progress callback: stage and fraction of that stage done (0..1). Return non-zero to cancel
- * the run; moa_run then returns MOA_ERROR_CANCELLED and the context stays usable. */
+/* Progress callback: stage and fraction of that stage done (0..1), never decreasing within a
+ * stage; a report may repeat the last fraction (long steps report again, so that they can be
+ * cancelled). Return non-zero to cancel the run; moa_run then returns MOA_ERROR_CANCELLED and
+ * the context stays usable. */
 typedef int (*moa_progress_fn)(moa_stage stage, double fraction, void *user_data);
 
 /* Statistics of the last successful moa_run. Fields may be appended in later versions; the

@@ -14,6 +14,9 @@
 
 namespace moa {
 
+// Steps (candidate edges, points) between two calls of GrowthState::poll; a power of two.
+constexpr std::size_t kPollEvery = 256;
+
 struct GrowthState {
   // `typical_spacing` is the cloud's median point spacing (median_spacing).
   GrowthState(const PointSet &p, const Neighborhood &n, const Params &par, double typical_spacing,
@@ -50,6 +53,11 @@ struct GrowthState {
     for (uint32_t f : added) mesh.remove(f);
     return false;
   }
+
+  // Reports progress again at the fraction last reached, from loops that can run for seconds
+  // on bad input (the loop module's passes, patches and take-in): each report gives the
+  // progress callback its chance to cancel. The loop module sets it; a no-op otherwise.
+  std::function<void()> poll = [] {};
 
   const PointSet &points;
   const Neighborhood &nb;

@@ -212,6 +212,7 @@ class LoopFiller {
       if (loop.fillable && loop.vertices.size() <= kMaxPatchedLoop) holes.push_back(loop.vertices);
     std::size_t closed = 0, widenings = 0;
     for (const std::vector<uint32_t> &hole : holes) {
+      g_.poll();
       if (!still_open(hole)) continue;  // widening a neighbouring hole changed it
       // At a sharp corner the faces across the crease can lie over a patch in projection
       // without crossing it: when nothing closes the hole with the second-layer test, it is
@@ -832,8 +833,9 @@ class LoopFiller {
       uint32_t from = uint32_t(kv.first >> 32), to = uint32_t(kv.first);
       if (loops_[kv.second].fillable) push(from, to);
     }
-    std::size_t added = 0;
+    std::size_t added = 0, popped = 0;
     while (!queue_.empty()) {
+      if ((++popped & (kPollEvery - 1)) == 0) g_.poll();
       HoleEdge e = queue_.top();
       queue_.pop();
       auto it = hole_loop_.find(key(e.from, e.to));
@@ -1035,12 +1037,26 @@ void fill_loops(GrowthState &g, const std::function<void(double)> &tick) {
   // Fill; then open the pinches that filling could not resolve, widen the holes that could
   // not be closed by the faces along them (a bad neighbourhood often blocks the last
   // triangles), and fill again.
+  // The fill rounds report the first kRoundsShare of the stage, the steps after them the rest;
+  // in between, g.poll reports the fraction reached again.
+  constexpr double kRoundsShare = 0.8;
+  double reached = 0;
+  const auto report = [&](double fraction) {
+    reached = std::max(reached, fraction);
+    tick(reached);
+  };
+  g.poll = [&] { tick(reached); };
+  struct PollReset {
+    GrowthState &g;
+    ~PollReset() { g.poll = [] {}; }
+  } poll_reset{g};
+
   const std::size_t first_loop_face = g.mesh.face_count();
   g.stats.triangles_removed += LoopFiller(g).drop_stray_pieces(false);
   constexpr int kRounds = 6;
   for (int round = 0; round < kRounds; ++round) {
     LoopFiller filler(g);
-    filler.run([&](double f) { tick((round + f) / kRounds); });
+    filler.run([&](double f) { report(kRoundsShare * (round + f) / kRounds); });
     if (round + 1 == kRounds) break;
     // In this order, spelled out: the operands of + may be evaluated either way round.
     std::size_t removed = open_pinched_vertices(g);
@@ -1056,6 +1072,7 @@ void fill_loops(GrowthState &g, const std::function<void(double)> &tick) {
   constexpr int kPatchRounds = 3;
   for (int round = 0; round < kPatchRounds && LoopFiller(g).patch_open_holes() > 0; ++round) {
   }
+  report(0.85);
   // What stays open may be a strip between two pieces whose loops each count as a border.
   // Pieces count as joined through a shared vertex, so the pinches go first: a stray piece
   // hanging from the surface by one vertex would be split off by finish_mesh, and stay.
@@ -1066,9 +1083,10 @@ void fill_loops(GrowthState &g, const std::function<void(double)> &tick) {
   // the take-in, which lengthens a handle's waist when it puts a point on it, and which takes
   // in the points a cut leaves out.
   cut_thin_handles(g, first_loop_face);
+  report(0.9);
   if (g.params.take_in_points != 0) take_in_points(g);
   g.stats.boundary_loops_after = LoopFiller(g).count_loops();
-  tick(1.0);
+  report(1.0);
 }
 
 }  // namespace moa

@@ -62,8 +62,10 @@ class PointTaker {
         if (!g_.mesh.is_used(p)) out.push_back(p);
       while (!out.empty()) {
         just_in.clear();
-        for (uint32_t p : out)
-          if (take(p)) just_in.set(p);
+        for (std::size_t i = 0; i < out.size(); ++i) {
+          if ((i & (kPollEvery - 1)) == kPollEvery - 1) g_.poll();
+          if (take(out[i])) just_in.set(out[i]);
+        }
         again.clear();
         for (uint32_t p : out) {
           if (g_.mesh.is_used(p)) {

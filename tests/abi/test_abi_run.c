@@ -315,6 +315,59 @@ static void test_parallel_pass_progress_and_cancel(void **state) {
   free(xyz);
 }
 
+/* On bad input the loop module can run for seconds (stray points through the volume: about
+ * 25 s for 20,000 points with no surface at all); it reports progress from inside its passes,
+ * so that a cancellation takes effect within a fraction of a second. A sphere of 800 points
+ * with 160 stray points through its bounding cube: the loop module reports 40 times, where
+ * reports between its passes and steps alone come at most 22 times (the start, 6 rounds of 3
+ * passes, 3 steps after them; 20 before the polls came); and a cancellation halfway through
+ * its reports stops the run and leaves the context usable. */
+static void test_loop_module_progress_and_cancel(void **state) {
+  moa_ctx *ctx = (moa_ctx *)*state;
+  const size_t surface = 800, stray = 160, count = surface + stray;
+  double *xyz = (double *)malloc(3 * count * sizeof(double));
+  uint64_t seed = 12345;
+  ProgressLog log;
+  size_t n_ref = 0, n = 0, i;
+  uint32_t *reference, *mesh;
+  moa_mesh m;
+  int loop_reports;
+  assert_non_null(xyz);
+  abi_fibonacci_ellipsoid(xyz, surface, 1.0, 1.0, 1.0);
+  for (i = 3 * surface; i < 3 * count; ++i) { /* uniform in [-1.2, 1.2]^3, a fixed sequence */
+    seed = seed * 6364136223846793005ULL + 1442695040888963407ULL;
+    xyz[i] = -1.2 + 2.4 * (double)(seed >> 11) / 9007199254740992.0;
+  }
+  assert_int_equal(moa_set_points(ctx, xyz, count), MOA_OK);
+  reset_log(&log, -1);
+  assert_int_equal(moa_set_progress_callback(ctx, log_progress, &log), MOA_OK);
+  assert_int_equal(moa_run(ctx), MOA_OK);
+  assert_false(log.out_of_order);
+  assert_false(log.bad_fraction);
+  loop_reports = log.calls[MOA_STAGE_LOOPS];
+  print_message("the loop module reported progress %d times\n", loop_reports);
+  if (loop_reports <= 30)
+    fail_msg("the loop module reported progress %d times: only between its passes", loop_reports);
+  reference = abi_copy_mesh(ctx, &n_ref);
+
+  reset_log(&log, MOA_STAGE_LOOPS);
+  log.cancel_call = loop_reports / 2;
+  assert_int_equal(moa_run(ctx), MOA_ERROR_CANCELLED);
+  assert_int_equal(log.calls[MOA_STAGE_LOOPS], loop_reports / 2);
+  assert_int_equal(moa_get_mesh(ctx, &m), MOA_ERROR_BAD_STATE);
+
+  reset_log(&log, -1);
+  assert_int_equal(moa_run(ctx), MOA_OK);
+  mesh = abi_copy_mesh(ctx, &n);
+  assert_int_equal(n, n_ref);
+  assert_memory_equal(mesh, reference, 3 * n * sizeof(uint32_t));
+  m = abi_check_mesh(ctx, count);
+  assert_memory_equal(m.vertices, xyz, 3 * count * sizeof(double));
+  free(mesh);
+  free(reference);
+  free(xyz);
+}
+
 /* Bad points fail in moa_run with MOA_ERROR_INVALID_INPUT, discard the last mesh, and leave the
  * context ready for good points. */
 static void test_invalid_input_keeps_ctx_usable(void **state) {
@@ -382,6 +435,8 @@ int main(void) {
                                       teardown_ctx),
       cmocka_unit_test_setup_teardown(test_cancel_each_stage, setup_sphere, teardown_ctx),
       cmocka_unit_test_setup_teardown(test_parallel_pass_progress_and_cancel, setup_sphere,
+                                      teardown_ctx),
+      cmocka_unit_test_setup_teardown(test_loop_module_progress_and_cancel, setup_sphere,
                                       teardown_ctx),
       cmocka_unit_test_setup_teardown(test_invalid_input_keeps_ctx_usable, setup_sphere,
                                       teardown_ctx),
