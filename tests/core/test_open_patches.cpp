@@ -88,6 +88,34 @@ const Case &holed_sphere_case() {
   return c;
 }
 
+// A random torus (radii 1 and 0.3, 8000 points, 0.038 apart) with a round hole 0.46 across
+// (12 spacings) cut where the tube faces outwards: a torus with one border. The tube turns
+// the planes 25 degrees within a few spacings, which once passed for a crease and let the
+// rule for tears along creases fill the hole with faces as long as it is wide.
+const Case &holed_torus_case() {
+  static const Case c = [] {
+    const Points torus = torus_random(8000, 1.0, 0.3, 28);
+    Points p;
+    for (std::size_t i = 0; i < torus.size(); i += 3)
+      if (std::hypot(torus[i] - 1.3, torus[i + 1], torus[i + 2]) > 0.23)
+        p.insert(p.end(), {torus[i], torus[i + 1], torus[i + 2]});
+    return make_case("random torus with a round hole", p);
+  }();
+  return c;
+}
+
+// One piece with one boundary loop and Euler characteristic -1 (a torus with a hole), every
+// point used.
+std::string holed_torus_failure(const Case &c) {
+  const std::string contract = contract_failure(c);
+  if (!contract.empty()) return contract;
+  const ContractReport &r = c.report;
+  if (r.components != 1 || r.boundary_loops != 1 || r.euler_characteristic != -1 ||
+      r.vertices_used != c.points.size() / 3)
+    return c.name + ": not a torus with one hole using every point\n" + r.describe();
+  return "";
+}
+
 // One piece with two boundary loops and Euler characteristic 0 (a ring), every point used.
 std::string ring_failure(const Case &c) {
   const std::string contract = contract_failure(c);
@@ -103,6 +131,7 @@ std::string ring_failure(const Case &c) {
 
 MOA_CONTRACT_TESTS(ring)
 MOA_CONTRACT_TESTS(holed_sphere)
+MOA_CONTRACT_TESTS(holed_torus)
 MOA_CONTRACT_TESTS(three_points)
 MOA_CONTRACT_TESTS(tetrahedron)
 MOA_CONTRACT_TESTS(flat_grid)
@@ -118,6 +147,9 @@ static void test_three_points_disk(void **) { MOA_EXPECT(disk_failure(three_poin
 static void test_tetrahedron_closed(void **) { MOA_EXPECT(closed_failure(tetrahedron_case(), 0)); }
 static void test_ring_keeps_its_hole(void **) { MOA_EXPECT(ring_failure(ring_case())); }
 static void test_holed_sphere_disk(void **) { MOA_EXPECT(disk_failure(holed_sphere_case())); }
+static void test_holed_torus_keeps_its_hole(void **) {
+  MOA_EXPECT(holed_torus_failure(holed_torus_case()));
+}
 
 int main(void) {
   const struct CMUnitTest tests[] = {
@@ -129,6 +161,7 @@ int main(void) {
       MOA_CONTRACT_ENTRIES(tetrahedron),      cmocka_unit_test(test_tetrahedron_closed),
       MOA_CONTRACT_ENTRIES(ring),             cmocka_unit_test(test_ring_keeps_its_hole),
       MOA_CONTRACT_ENTRIES(holed_sphere),     cmocka_unit_test(test_holed_sphere_disk),
+      MOA_CONTRACT_ENTRIES(holed_torus),      cmocka_unit_test(test_holed_torus_keeps_its_hole),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
