@@ -756,7 +756,10 @@ class LoopFiller {
     return std::sqrt(width);
   }
 
-  // Whether a loop bends across a crease (kCreaseAngle, within kCreaseReach).
+  // Whether a loop bends across a crease (kCreaseAngle, within kCreaseReach). In a cloud
+  // sampled along lines any such turn counts: there a short loop is the unsampled surface
+  // between two lines, a hole however gradually it turns (where the surface runs nearly
+  // parallel to the lines; a noisy torus contour stack kept four such, 100 boundary edges).
   bool bends(const std::vector<uint32_t> &loop) const {
     const auto &w = g_.points.work;
     const std::size_t n = loop.size();
@@ -768,7 +771,7 @@ class LoopFiller {
         const uint32_t a = loop[i], b = loop[(i + step) % n];
         const double reach = kCreaseReach * 0.5 * (g_.nb.spacing[a] + g_.nb.spacing[b]);
         if (std::fabs(dot(normals[i], normals[(i + step) % n])) <= cos_crease &&
-            norm2(w[a] - w[b]) <= reach * reach)
+            (g_.nb.lined || norm2(w[a] - w[b]) <= reach * reach))
           return true;
       }
     return false;

@@ -158,6 +158,7 @@ Neighborhood compute_neighbors(const KdIndex &index, unsigned k,
     nb.thin_walls = has_thin_walls(index.points(), nb);
     return nb;
   }
+  nb.lined = true;
   std::vector<uint8_t> ranks(across_rank);
   std::nth_element(ranks.begin(), ranks.begin() + std::ptrdiff_t(n / 2), ranks.end());
   const unsigned median_rank = ranks[n / 2];

@@ -20,6 +20,7 @@ struct Neighborhood {
                                // nearest neighbour off the point's line
   bool thin_walls = false;     // the cloud's walls are two or three spacings thick: local
                                // planes look past the far sheet (plane_normal)
+  bool lined = false;          // the cloud is sampled along lines (kLinedShare)
 
   const uint32_t *of(uint32_t i) const { return knn.data() + std::size_t(i) * k; }
 };
