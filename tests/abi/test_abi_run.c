@@ -274,32 +274,19 @@ static void test_cancel_each_stage(void **state) {
   free(xyz);
 }
 
-/* A cloud large enough for Algorithm 1's parallel first pass (its parts grow on worker
- * threads): the reports still come on the calling thread, in order, and a cancellation in the
- * middle of that pass stops the run and leaves the context usable. */
-static void test_parallel_pass_progress_and_cancel(void **state) {
-  moa_ctx *ctx = (moa_ctx *)*state;
-  const size_t count = 9000; /* above 8192 points, two parts */
-  double *xyz = abi_sphere(count);
+/* Cancels the next run at report `call` of `stage`; then the context must be usable: the run
+ * after gives `reference` (n_ref triangles) again, on the caller's points in their order. */
+static void cancel_and_rerun(moa_ctx *ctx, moa_stage stage, int call, const uint32_t *reference,
+                             size_t n_ref, const double *xyz, size_t count) {
   ProgressLog log;
-  size_t n_ref = 0, n = 0;
-  uint32_t *reference, *mesh;
+  size_t n = 0;
+  uint32_t *mesh;
   moa_mesh m;
-  assert_int_equal(moa_set_param(ctx, "threads", 2), MOA_OK);
-  assert_int_equal(moa_set_points(ctx, xyz, count), MOA_OK);
-  reset_log(&log, -1);
+  reset_log(&log, (int)stage);
+  log.cancel_call = call;
   assert_int_equal(moa_set_progress_callback(ctx, log_progress, &log), MOA_OK);
-  assert_int_equal(moa_run(ctx), MOA_OK);
-  assert_false(log.out_of_order);
-  assert_false(log.bad_fraction);
-  assert_false(log.wrong_thread);
-  assert_true(log.calls[MOA_STAGE_MESH] > 2); /* reports from inside the parallel pass too */
-  reference = abi_copy_mesh(ctx, &n_ref);
-
-  reset_log(&log, MOA_STAGE_MESH);
-  log.cancel_call = 2; /* the first report after the stage's start: inside the parallel pass */
   assert_int_equal(moa_run(ctx), MOA_ERROR_CANCELLED);
-  assert_int_equal(log.calls[MOA_STAGE_MESH], 2);
+  assert_int_equal(log.calls[stage], call);
   assert_false(log.wrong_thread);
   assert_int_equal(moa_get_mesh(ctx, &m), MOA_ERROR_BAD_STATE);
 
@@ -311,6 +298,31 @@ static void test_parallel_pass_progress_and_cancel(void **state) {
   m = abi_check_mesh(ctx, count);
   assert_memory_equal(m.vertices, xyz, 3 * count * sizeof(double));
   free(mesh);
+  assert_int_equal(moa_set_progress_callback(ctx, NULL, NULL), MOA_OK); /* log goes now */
+}
+
+/* A cloud large enough for Algorithm 1's parallel first pass (its parts grow on worker
+ * threads): the reports still come on the calling thread, in order, and a cancellation in the
+ * middle of that pass stops the run and leaves the context usable. */
+static void test_parallel_pass_progress_and_cancel(void **state) {
+  moa_ctx *ctx = (moa_ctx *)*state;
+  const size_t count = 9000; /* above 8192 points, two parts */
+  double *xyz = abi_sphere(count);
+  ProgressLog log;
+  size_t n_ref = 0;
+  uint32_t *reference;
+  assert_int_equal(moa_set_param(ctx, "threads", 2), MOA_OK);
+  assert_int_equal(moa_set_points(ctx, xyz, count), MOA_OK);
+  reset_log(&log, -1);
+  assert_int_equal(moa_set_progress_callback(ctx, log_progress, &log), MOA_OK);
+  assert_int_equal(moa_run(ctx), MOA_OK);
+  assert_false(log.out_of_order);
+  assert_false(log.bad_fraction);
+  assert_false(log.wrong_thread);
+  assert_true(log.calls[MOA_STAGE_MESH] > 2); /* reports from inside the parallel pass too */
+  reference = abi_copy_mesh(ctx, &n_ref);
+  /* The first report after the stage's start: inside the parallel pass. */
+  cancel_and_rerun(ctx, MOA_STAGE_MESH, 2, reference, n_ref, xyz, count);
   free(reference);
   free(xyz);
 }
@@ -328,9 +340,8 @@ static void test_loop_module_progress_and_cancel(void **state) {
   double *xyz = (double *)malloc(3 * count * sizeof(double));
   uint64_t seed = 12345;
   ProgressLog log;
-  size_t n_ref = 0, n = 0, i;
-  uint32_t *reference, *mesh;
-  moa_mesh m;
+  size_t n_ref = 0, i;
+  uint32_t *reference;
   int loop_reports;
   assert_non_null(xyz);
   abi_fibonacci_ellipsoid(xyz, surface, 1.0, 1.0, 1.0);
@@ -349,21 +360,7 @@ static void test_loop_module_progress_and_cancel(void **state) {
   if (loop_reports <= 30)
     fail_msg("the loop module reported progress %d times: only between its passes", loop_reports);
   reference = abi_copy_mesh(ctx, &n_ref);
-
-  reset_log(&log, MOA_STAGE_LOOPS);
-  log.cancel_call = loop_reports / 2;
-  assert_int_equal(moa_run(ctx), MOA_ERROR_CANCELLED);
-  assert_int_equal(log.calls[MOA_STAGE_LOOPS], loop_reports / 2);
-  assert_int_equal(moa_get_mesh(ctx, &m), MOA_ERROR_BAD_STATE);
-
-  reset_log(&log, -1);
-  assert_int_equal(moa_run(ctx), MOA_OK);
-  mesh = abi_copy_mesh(ctx, &n);
-  assert_int_equal(n, n_ref);
-  assert_memory_equal(mesh, reference, 3 * n * sizeof(uint32_t));
-  m = abi_check_mesh(ctx, count);
-  assert_memory_equal(m.vertices, xyz, 3 * count * sizeof(double));
-  free(mesh);
+  cancel_and_rerun(ctx, MOA_STAGE_LOOPS, loop_reports / 2, reference, n_ref, xyz, count);
   free(reference);
   free(xyz);
 }
