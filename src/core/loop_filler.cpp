@@ -60,8 +60,8 @@ constexpr std::size_t kMaxMeasuredLoop = 4096;
 constexpr double kShortcutRatio = 1.3;
 // Vertices each way over which the loop is smoothed before its waists are measured; at most
 // one kWaistSmoothingShare-th of the loop, as the mean of 7 of a short loop's vertices lies
-// well inside it (at 0.46 of the radius of a round loop of 11: a hole 12 spacings across, its
-// rim a few long edges, measured 5.5 wide and filled as narrow).
+// well inside it (at 0.46 of the radius of a round loop of 11: a hole 12 spacings across,
+// its rim a few long edges, measured about half as wide and filled as narrow).
 constexpr std::size_t kWaistSmoothing = 3;
 constexpr std::size_t kWaistSmoothingShare = 8;
 // A loop at most this share of the square root of its surface's vertex count long, and at most
