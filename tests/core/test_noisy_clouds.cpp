@@ -245,9 +245,9 @@ void test_stray_points_left_out(void **) {
 // A hollow ball: two concentric random spheres (radii 1 and 1.157, 6000 points in all, each
 // sphere as dense as the other) 4.8 nearest-neighbour distances apart. A point's 10 nearest lie
 // on its own sphere, its 20 nearest reach the other, so the 20-point neighbourhoods look far
-// rougher than the 10-point ones, as a noisy cloud's 10-point ones do; smoothed as noise, the
-// two spheres became one surface zigzagging between them (1 component, 70 % of its faces
-// joining the spheres). Clean, they are two closed spheres.
+// rougher than the 10-point ones, as a noisy cloud's 10-point ones do. Smoothed as noise, such
+// spheres become one surface zigzagging between them (20,000 points 5 apart: 1 component, 68 %
+// of its faces joining the spheres). Clean, they are two closed spheres.
 constexpr double kInnerRadius = 1.0, kOuterRadius = 1.157;
 
 const Case &hollow_ball_case() {
