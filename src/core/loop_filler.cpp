@@ -808,14 +808,15 @@ class LoopFiller {
       g_.mesh.edge_faces(loop.vertices[1 % n], loop.vertices[0], fs);
       loop.piece = g_.mesh.component(fs[0]);
       const double surface_vertices = 0.5 * double(faces_of_component[loop.piece]);
-      // A strip is narrow by its waists, the spacing capped where the loop runs among stray
-      // points: their own spacing would make a gap of any width among them look narrow.
-      const bool narrow =
-          width <= hole_width ||
-          widest_waist(loop.vertices) <= g_.params.hole_size * std::min(spacing, sparse_spacing);
-      const bool small = double(n) <= kSmallLoopShare * std::sqrt(surface_vertices) &&
-                         width <= kSmallLoopWidths * hole_width && bends(loop.vertices);
-      loop.fillable = g_.params.solid != 0 || narrow || small;
+      // Narrow, or else small; a strip is narrow by its waists too, the spacing capped where
+      // the loop runs among stray points: their own spacing would make a gap of any width among
+      // them look narrow. The dearer tests come last: the waists take a quadratic number of
+      // distances, the bend a fitted plane per vertex.
+      loop.fillable =
+          g_.params.solid != 0 || width <= hole_width ||
+          widest_waist(loop.vertices) <= g_.params.hole_size * std::min(spacing, sparse_spacing) ||
+          (double(n) <= kSmallLoopShare * std::sqrt(surface_vertices) &&
+           width <= kSmallLoopWidths * hole_width && bends(loop.vertices));
     }
     // Candidates of a loop: its own vertices, and the neighbours of its vertices that lie on
     // another loop (the outer loop around an island, Fig. 9 (2), whose lists the paper

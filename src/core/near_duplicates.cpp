@@ -109,6 +109,8 @@ std::vector<uint32_t> near_duplicates(const PointSet &points, const Neighborhood
   for (uint32_t i = 0; i < n; ++i) {
     if (copies && within(i, kNearDuplicateDistance)) join(i, nb.of(i)[0]);
     if (judge_regions && tight[i] && in_jittered_region(i)) {
+      // Found again rather than kept from the count: few points get here, and keeping every
+      // cluster's members would cost 12 bytes a point.
       const TightCluster c = tight_cluster(p, nb, i, ordered);
       for (unsigned m = 0; m < c.size; ++m) join(i, c.members[m]);
     }
