@@ -56,6 +56,15 @@ const Case &tetrahedron_case() {
   return c;
 }
 
+// The points of p farther than radius from (x, y, z): a round hole cut out of a surface.
+Points outside_ball(const Points &p, double x, double y, double z, double radius) {
+  Points out;
+  for (std::size_t i = 0; i < p.size(); i += 3)
+    if (std::hypot(p[i] - x, p[i + 1] - y, p[i + 2] - z) > radius)
+      out.insert(out.end(), {p[i], p[i + 1], p[i + 2]});
+  return out;
+}
+
 // A flat ring (radii 0.2 and 1) sampled at random: its hole, about 20 spacings across, is a
 // border (a hole drilled through a plate), not a gap to fill. Its loop is short next to the
 // ring, which once let the loop module's rule for tears along creases fill it with faces as
@@ -77,14 +86,8 @@ const Case &ring_case() {
 // (its vertices' planes differ by up to about 40 degrees), where the rim of a tear along a
 // crease bends by 50 degrees and more.
 const Case &holed_sphere_case() {
-  static const Case c = [] {
-    const Points sphere = sphere_random(10000, 1.0, 26);
-    Points p;
-    for (std::size_t i = 0; i < sphere.size(); i += 3)
-      if (std::hypot(sphere[i], sphere[i + 1], sphere[i + 2] - 1.0) > 0.35)
-        p.insert(p.end(), {sphere[i], sphere[i + 1], sphere[i + 2]});
-    return make_case("random sphere with a round hole", p);
-  }();
+  static const Case c = make_case("random sphere with a round hole",
+                                  outside_ball(sphere_random(10000, 1.0, 26), 0, 0, 1, 0.35));
   return c;
 }
 
@@ -92,12 +95,7 @@ const Case &holed_sphere_case() {
 // (12 spacings) cut where the tube faces outwards: a torus with one border. Algorithm 1 leaves
 // a rim of a dozen long edges around it.
 Points holed_torus(std::uint64_t seed) {
-  const Points torus = torus_random(8000, 1.0, 0.3, seed);
-  Points p;
-  for (std::size_t i = 0; i < torus.size(); i += 3)
-    if (std::hypot(torus[i] - 1.3, torus[i + 1], torus[i + 2]) > 0.23)
-      p.insert(p.end(), {torus[i], torus[i + 1], torus[i + 2]});
-  return p;
+  return outside_ball(torus_random(8000, 1.0, 0.3, seed), 1.3, 0, 0, 0.23);
 }
 
 // The tube turns the planes 25 degrees within two steps of such a rim, which once passed for a
