@@ -111,6 +111,20 @@ class LoopFiller {
  public:
   explicit LoopFiller(GrowthState &g) : g_(g) {}
 
+  // The last try, after the take-in: a hole still open whose closing needs an edge of a right
+  // angle or sharper. The fill passes take their apexes only beyond the plane through the
+  // segment square to the face on it, so the faces of a box, a pyramid or a prism sampled at
+  // their corners alone never met (CGAL's advancing front closes them). This round takes
+  // them only from behind that plane, where the judgment's edge-fold test still keeps them
+  // off the face itself; and it keeps only what closes a hole entirely, so a hole it cannot
+  // close stays as the passes before left it.
+  void close_at_sharp_edges(const std::function<void(double)> &tick) {
+    behind_ = true;
+    const uint32_t first = uint32_t(g_.mesh.face_count());
+    run(tick);
+    g_.stats.triangles_loops -= remove_open_groups(first);
+  }
+
   std::size_t count_loops() {
     collect_hole_edges();
     return trace_loops().size();
@@ -888,6 +902,34 @@ class LoopFiller {
            try_candidates(u, v, z, side, loop.outer, loop_id, relaxed);
   }
 
+  // Removes the faces added since face `first` whose group (joined through shared edges)
+  // still has a boundary edge. Returns how many.
+  std::size_t remove_open_groups(uint32_t first) {
+    const uint32_t n = uint32_t(g_.mesh.face_count()) - first;
+    DisjointSets groups(n);
+    std::vector<char> open(n, 0);
+    for (uint32_t i = 0; i < n; ++i) {
+      if (!g_.mesh.alive(first + i)) continue;
+      const Tri &t = g_.mesh.stored(first + i);
+      for (int k = 0; k < 3; ++k) {
+        uint32_t fs[2];
+        const int count = g_.mesh.edge_faces(t[k], t[(k + 1) % 3], fs);
+        open[i] |= count == 1;
+        for (int j = 0; j < count; ++j)
+          if (fs[j] > first + i) groups.join(i, fs[j] - first);
+      }
+    }
+    for (uint32_t i = 0; i < n; ++i)
+      if (open[i]) open[groups.root(i)] = 1;
+    std::size_t removed = 0;
+    for (uint32_t i = 0; i < n; ++i)
+      if (g_.mesh.alive(first + i) && open[groups.root(i)]) {
+        g_.mesh.remove(first + i);
+        ++removed;
+      }
+    return removed;
+  }
+
   // Does t close a hole, taking all three of its sides from faces already there?
   bool closes_hole(const Tri &t) const {
     for (int i = 0; i < 3; ++i) {
@@ -980,13 +1022,13 @@ class LoopFiller {
                        });
       near_.resize(kMaxLoopCandidates);
     }
-    g_.search.rank(u, v, near_, side, z, ranked_);
+    g_.search.rank(u, v, near_, side, z, ranked_, behind_);
     for (const Candidate &c : ranked_) {
       Tri t{u, v, c.vertex};
       if (joins_another_loop(t, loop_id)) continue;
       Verdict verdict = g_.judge.judge(t, sphere_.data(), relaxed ? 0 : sphere_.size(), relaxed);
       TopologyJudge::count(verdict, g_.stats);
-      if (verdict == Verdict::Manifold && relaxed && closes_hole(t))
+      if (verdict == Verdict::Manifold && relaxed && !behind_ && closes_hole(t))
         verdict = clear_pinch_and_retry(t);
       if (verdict != Verdict::Accept) continue;
       g_.add_face(t);
@@ -1016,6 +1058,7 @@ class LoopFiller {
   std::priority_queue<HoleEdge, std::vector<HoleEdge>, std::greater<HoleEdge>> queue_;
   std::vector<uint32_t> near_, sphere_;
   std::vector<Candidate> ranked_;
+  bool behind_ = false;  // apexes from behind the rim face only (close_at_sharp_edges)
 };
 
 // Removes, at every vertex whose faces form several fans, the faces of all fans but the
@@ -1106,6 +1149,7 @@ void fill_loops(GrowthState &g, const std::function<void(double)> &tick) {
   cut_thin_handles(g, first_loop_face);
   report(0.9);
   if (g.params.take_in_points != 0) take_in_points(g);
+  LoopFiller(g).close_at_sharp_edges([&](double f) { report(0.95 + 0.05 * f); });
   g.stats.boundary_loops_after = LoopFiller(g).count_loops();
   report(1.0);
 }

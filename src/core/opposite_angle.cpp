@@ -29,14 +29,14 @@ void OppositeAngleSearch::sphere_points(uint32_t a, uint32_t b, std::vector<uint
 }
 
 void OppositeAngleSearch::rank(uint32_t a, uint32_t b, const std::vector<uint32_t> &pool, Vec3 side,
-                               uint32_t exclude, std::vector<Candidate> &out) const {
+                               uint32_t exclude, std::vector<Candidate> &out, bool behind) const {
   out.clear();
   const Vec3 &A = points_.work[a], &B = points_.work[b];
   bool any_side = norm2(side) == 0;
   for (uint32_t c : pool) {
     if (c == a || c == b || c == exclude) continue;
     const Vec3 &C = points_.work[c];
-    if (!any_side && dot(C - A, side) <= 0) continue;
+    if (!any_side && (dot(C - A, side) > 0) == behind) continue;
     Vec3 ca = A - C, cb = B - C;
     out.push_back({dot(ca, cb) / std::sqrt(norm2(ca) * norm2(cb)), c});
   }

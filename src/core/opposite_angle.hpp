@@ -26,9 +26,10 @@ class OppositeAngleSearch {
   // Points of the k-NN lists of a and b that lie inside the sphere of segment ab.
   void sphere_points(uint32_t a, uint32_t b, std::vector<uint32_t> &out);
   // Candidates from `pool` other than a, b and `exclude`, strictly on the side `side` points
-  // to (side = 0 accepts both sides), largest angle first, ties broken by index.
+  // to (side = 0 accepts both sides; with `behind`, those on the other side or on the plane
+  // between), largest angle first, ties broken by index.
   void rank(uint32_t a, uint32_t b, const std::vector<uint32_t> &pool, Vec3 side, uint32_t exclude,
-            std::vector<Candidate> &out) const;
+            std::vector<Candidate> &out, bool behind = false) const;
 
  private:
   const PointSet &points_;

@@ -276,6 +276,26 @@ static void test_cone_take_in_closed_genus0(void **) {
 static void test_tetrahedron_take_in_closed_genus0(void **) {
   MOA_EXPECT(closed_failure(tetrahedron_take_in_case(), 0));
 }
+// Polyhedra given by their corners alone, the first thing many users try: each face a polygon
+// of a few points, the edges at most right angles. The faces grown first met the others across
+// edges sharper than the fill passes reach (square pyramid 63 degrees, triangular prism 60,
+// box 90): a face stayed open on the box, the pyramid and the prism.
+static void test_polyhedron_corners_closed_genus0(void **) {
+  Points box, pyramid = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5, 0.5, 1}, prism;
+  for (int i = 0; i < 8; ++i) box.insert(box.end(), {double(i & 1), 2.0 * (i >> 1 & 1), 3.0 * (i >> 2)});
+  for (double z : {0.0, 2.0}) prism.insert(prism.end(), {0, 0, z, 1, 0, z, 0.5, 0.8, z});
+  const std::vector<std::pair<const char *, Points>> shapes = {
+      {"box corners", box},
+      {"square pyramid corners", pyramid},
+      {"triangular prism corners", prism},
+      {"regular tetrahedron corners", {1, 1, 1, 1, -1, -1, -1, 1, -1, -1, -1, 1}},
+      {"octahedron corners", {1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1}}};
+  for (const auto &[name, points] : shapes) {
+    const Case c = make_case(name, points);
+    MOA_EXPECT(contract_failure(c));
+    MOA_EXPECT(closed_failure(c, 0));
+  }
+}
 static void test_sphere_duplicates_closed_genus0(void **) {
   MOA_EXPECT(closed_failure(sphere_duplicates_case(), 0));
 }
@@ -307,6 +327,7 @@ int main(void) {
       MOA_CONTRACT_ENTRIES(pipe),             cmocka_unit_test(test_pipe_closed_genus1),
       MOA_CONTRACT_ENTRIES(tetrahedron),      cmocka_unit_test(test_tetrahedron_closed_genus0),
       cmocka_unit_test(test_tetrahedron_take_in_closed_genus0),
+      cmocka_unit_test(test_polyhedron_corners_closed_genus0),
       MOA_CONTRACT_ENTRIES(cone),             cmocka_unit_test(test_cone_closed_genus0),
       MOA_CONTRACT_ENTRIES(cone_take_in),     cmocka_unit_test(test_cone_take_in_closed_genus0),
       MOA_CONTRACT_ENTRIES(sphere_duplicates), cmocka_unit_test(test_sphere_duplicates_closed_genus0),
