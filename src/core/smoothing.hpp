@@ -18,11 +18,13 @@
 namespace moa {
 
 struct NoiseEstimate {
-  bool noisy = false;        // the roughness shrinks as the neighbourhood grows, or the lines
-                             // of a cloud sampled along lines are not plane curves
+  bool noisy = false;        // the roughness shrinks as the neighbourhood grows, in the cloud
+                             // or in enough of its parts; or the lines of a cloud sampled
+                             // along lines are not plane curves
   unsigned smoothing_k = 0;  // neighbourhood size at which the cloud looks flattest
   double small_scale = 0;    // median thickness / width at 10 or 20 points, the rougher (at
-                             // 10 alone when that is flat: see estimate_noise)
+                             // 10 alone when that is flat: see estimate_noise); over the
+                             // noisy-looking points when the cloud is noisy in part
   double large_scale = 0;    // the same at smoothing_k points
 };
 
