@@ -50,11 +50,12 @@ constexpr double kFarSheetJump = 3.0;
 // sets of the shared meshes, marching-cubes vertices, shells, lattices, gyroids, cones,
 // density gradients, stray points) at most 11.4 % look so (a pretzel's marching-cubes
 // vertices), 13.5 % with as many stray points as surface points, 25 % two concentric spheres
-// 2 spacings apart (but there the finest neighbourhoods stand alone, see below). With noise of 0.3-0.7 nearest-neighbour distances on half of a
-// 20,000-point sample of bunny, elephant, fandisk and homer: 11-38 %; building.ply: 41 %.
-// Looser tests (rough above 0.03, a drop to 0.8) found 45-51 % on knot2's vertices and a
-// gyroid. Not in clouds of thin walls (finest_alone in estimate_noise): 89-97 % of the points
-// of plates and a pipe about two spacings thick look noisy so.
+// 2 spacings apart (whose finest neighbourhoods stand alone, see below). With noise of 0.3-0.7
+// nearest-neighbour distances on half of a 20,000-point sample of bunny, elephant, fandisk and
+// homer: 11-38 %; building.ply: 41 %. Looser tests (rough above 0.03, a drop to 0.8) found
+// 45-51 % on knot2's vertices and a gyroid. Not in clouds of thin walls (finest_alone in
+// estimate_noise): 89-97 % of the points of plates and a pipe about two spacings thick look
+// noisy so.
 constexpr double kPartRoughness = 0.1;
 constexpr double kPartDrop = 0.6;
 constexpr double kNoisyPartShare = 0.15;
