@@ -4,6 +4,7 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "core/kd_tree.hpp"
@@ -192,13 +193,40 @@ void keep_raw_at_thin_parts(const KdIndex &index, double nearest_distance,
 }
 
 constexpr std::size_t kScaleCount = std::size(kScales);
+using ScaleMedians = std::array<double, kScaleCount>;
+
+// `ratios`: thickness over width per sample and scale, -1 where not measured. The median of
+// each scale over the samples that `take` (a sample's index) accepts; -1 where none is measured.
+template <class Take>
+ScaleMedians scale_medians(const std::vector<double> &ratios, std::size_t samples, Take take) {
+  ScaleMedians medians;
+  std::vector<double> col;
+  for (std::size_t c = 0; c < kScaleCount; ++c) {
+    col.clear();
+    for (std::size_t s = 0; s < samples; ++s)
+      if (ratios[s * kScaleCount + c] >= 0 && take(s)) col.push_back(ratios[s * kScaleCount + c]);
+    medians[c] = col.empty() ? -1.0 : median(col);
+  }
+  return medians;
+}
+
+// The roughness at the small scale (10 points alone when they stand alone, else the rougher of
+// 10 and 20) and the flattest larger scale below it: smoothing_k stays as it was when none is.
+void set_scales(const ScaleMedians &m, bool finest_alone, NoiseEstimate &est) {
+  est.small_scale = finest_alone ? m[0] : std::max(m[0], m[1]);
+  est.large_scale = est.small_scale;
+  for (std::size_t c = kSmallScales; c < kScaleCount; ++c)
+    if (m[c] >= 0 && m[c] < est.large_scale) {
+      est.large_scale = m[c];
+      est.smoothing_k = kScales[c];
+    }
+}
 
 // The cloud is noisy in part when enough of its sample points look noisy on their own (see
 // kNoisyPartShare); then the smoothing scale is the one at which those look flattest.
-// `ratios`: thickness over width per sample and scale, -1 where not measured.
 void noisy_in_part(const std::vector<double> &ratios, std::size_t samples, NoiseEstimate &est) {
-  std::vector<double> noisy_ratios[kScaleCount];
-  std::size_t measured = 0, noisy = 0;
+  std::vector<char> noisy(samples, 0);
+  std::size_t measured = 0, noisy_count = 0;
   for (std::size_t s = 0; s < samples; ++s) {
     const double *r = &ratios[s * kScaleCount];
     if (r[0] < 0 || r[1] < 0) continue;
@@ -207,25 +235,16 @@ void noisy_in_part(const std::vector<double> &ratios, std::size_t samples, Noise
     double large = small;
     for (std::size_t c = kSmallScales; c < kScaleCount; ++c)
       if (r[c] >= 0) large = std::min(large, r[c]);
-    if (small <= kPartRoughness || large >= kPartDrop * small) continue;
-    ++noisy;
-    for (std::size_t c = 0; c < kScaleCount; ++c)
-      if (r[c] >= 0) noisy_ratios[c].push_back(r[c]);
+    noisy[s] = small > kPartRoughness && large < kPartDrop * small;
+    noisy_count += noisy[s];
   }
-  if (measured == 0 || double(noisy) < kNoisyPartShare * double(measured)) return;
-  const double small = std::max(median(noisy_ratios[0]), median(noisy_ratios[1]));
-  double large = small;
-  unsigned k = 0;
-  for (std::size_t c = kSmallScales; c < kScaleCount; ++c)
-    if (!noisy_ratios[c].empty() && median(noisy_ratios[c]) < large) {
-      large = median(noisy_ratios[c]);
-      k = kScales[c];
-    }
-  if (k == 0) return;
-  est.noisy = true;
-  est.smoothing_k = k;
-  est.small_scale = small;
-  est.large_scale = large;
+  if (measured == 0 || double(noisy_count) < kNoisyPartShare * double(measured)) return;
+  NoiseEstimate part;
+  set_scales(scale_medians(ratios, samples, [&](std::size_t s) { return noisy[s] != 0; }),
+             false, part);
+  if (part.smoothing_k == 0) return;
+  part.noisy = true;
+  est = part;
 }
 
 }  // namespace
@@ -274,25 +293,13 @@ NoiseEstimate estimate_noise(const KdIndex &index) {
     if (r >= 0) on_lines.push_back(r);
   const bool rough_lines = double(on_lines.size()) >= kLinedShare * double(samples) &&
                            median(on_lines) > kMinLineRoughness;
-  double medians[kScaleCount];
-  for (std::size_t c = 0; c < kScaleCount; ++c) {
-    std::vector<double> col;
-    for (std::size_t s = 0; s < samples; ++s)
-      if (ratios[s * kScaleCount + c] >= 0) col.push_back(ratios[s * kScaleCount + c]);
-    medians[c] = col.empty() ? -1.0 : median(col);
-  }
+  const ScaleMedians medians = scale_medians(ratios, samples, [](std::size_t) { return true; });
   // Finest neighbourhoods that are flat have no scatter that matters, however rough the next
   // size looks: what 20 points add to 10 there is the far sheet of a thin wall (a plate or a
   // pipe two or three spacings thick), and smoothing would fold the two sheets into one.
   const bool finest_alone = medians[0] >= 0 && (medians[0] <= kFlatFinestScale ||
                                                  medians[1] > kFarSheetJump * medians[0]);
-  est.small_scale = finest_alone ? medians[0] : std::max(medians[0], medians[1]);
-  est.large_scale = est.small_scale;
-  for (std::size_t c = kSmallScales; c < kScaleCount; ++c)
-    if (medians[c] >= 0 && medians[c] < est.large_scale) {
-      est.large_scale = medians[c];
-      est.smoothing_k = kScales[c];
-    }
+  set_scales(medians, finest_alone, est);
   est.noisy = (est.smoothing_k != 0 && est.small_scale > kMinRoughness &&
                est.large_scale < kNoisyDrop * est.small_scale) ||
               rough_lines;
