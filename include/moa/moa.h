@@ -71,7 +71,7 @@ typedef struct moa_mesh {
 /* Stages of moa_run, reported to the progress callback and in the statistics. */
 typedef enum moa_stage {
   MOA_STAGE_POINTS = 0,     /* validation, duplicate merging, spatial sort */
-  MOA_STAGE_NEIGHBORS = 1,  /* k nearest neighbours, spacing, local planes */
+  MOA_STAGE_NEIGHBORS = 1,  /* k nearest neighbours, spacing, noise, stray points */
   MOA_STAGE_MESH = 2,       /* Algorithm 1: the list, maximum opposite points, judgment */
   MOA_STAGE_LOOPS = 3,      /* Algorithm 2: the loop module fills holes */
   MOA_STAGE_FINISH = 4,     /* orientation, contract enforcement, index mapping */

@@ -847,7 +847,7 @@ class LoopFiller {
           uint32_t p = nb[j];
           if (mark[p] == l) continue;
           if (!g_.mesh.is_used(p)) {
-            if (!take_in) continue;
+            if (!take_in || g_.nb.alone(p)) continue;
             mark[p] = l;
             loop.pool.push_back(p);
           } else if (loop_of_vertex.count(p)) {
@@ -1009,7 +1009,7 @@ class LoopFiller {
           auto it = loop_of_vertex_.find(c);
           bool member = other_loops ? (it != loop_of_vertex_.end() && it->second != loop_id)
                                     : ((it != loop_of_vertex_.end() && it->second == loop_id) ||
-                                       !g_.mesh.is_used(c));
+                                       (!g_.mesh.is_used(c) && !g_.nb.alone(c)));
           if (member && std::find(near_.begin(), near_.end(), c) == near_.end()) consider(c);
         }
       }

@@ -76,11 +76,11 @@ class Builder {
     std::vector<uint32_t> start(blocks + 1, 0);
     seed_order_.clear();
     for (uint32_t i = 0; i < n; ++i)
-      if (!region_ || region_->has(i)) ++start[seed_block(i) + 1];
+      if ((!region_ || region_->has(i)) && !g_.nb.alone(i)) ++start[seed_block(i) + 1];
     for (uint32_t b = 0; b < blocks; ++b) start[b + 1] += start[b];
     seed_order_.resize(start[blocks]);
     for (uint32_t i = 0; i < n; ++i)
-      if (!region_ || region_->has(i)) seed_order_[start[seed_block(i)]++] = i;
+      if ((!region_ || region_->has(i)) && !g_.nb.alone(i)) seed_order_[start[seed_block(i)]++] = i;
     next_seed_ = 0;
   }
 
@@ -101,10 +101,8 @@ class Builder {
       list_.pop();
       if ((++steps & 4095) == 0)
         tick(from + (to - from) * std::min(1.0, double(g_.mesh.face_count()) / expected));
-      const unsigned next_rank = unsigned(s.rank) + 1;
-      if (process(s.a, s.b) == Outcome::None && s.seed != kNone &&
-          next_rank < std::min(kSeedRanks, g_.nb.k))
-        push_seed(s.seed, next_rank);
+      if (process(s.a, s.b) == Outcome::None && s.seed != kNone)
+        push_seed(s.seed, unsigned(s.rank) + 1);
     }
   }
 
@@ -124,9 +122,14 @@ class Builder {
     list_.push({dist(g_.points.work[a], g_.points.work[b]), a, b});
   }
 
+  // Lists point i with its neighbour of the given rank, or the next one that is not isolated;
+  // nothing once the ranks tried for seeds run out.
   void push_seed(uint32_t i, unsigned rank) {
     // A mutual nearest pair is listed twice, once for each point, so that each point moves on
     // to its own next neighbour if the pair finds no triangle.
+    const unsigned ranks = std::min(kSeedRanks, g_.nb.k);
+    while (rank < ranks && g_.nb.alone(g_.nb.of(i)[rank])) ++rank;
+    if (rank >= ranks) return;
     uint32_t j = g_.nb.of(i)[rank];
     Segment s{dist(g_.points.work[i], g_.points.work[j]), std::min(i, j), std::max(i, j), i,
               uint8_t(rank)};

@@ -13,16 +13,19 @@
 namespace moa {
 
 struct Neighborhood {
-  unsigned k = 0;               // the parameter's, or more in a cloud sampled along lines
-  std::vector<uint32_t> knn;   // k per point, nearest first, the point itself excluded
-  std::vector<float> spacing;  // mean distance to the nearest few neighbours (work units); in
-                               // a cloud sampled along lines, at least most of the gap to the
-                               // nearest neighbour off the point's line
-  bool thin_walls = false;     // the cloud's walls are two or three spacings thick: local
-                               // planes look past the far sheet (plane_normal)
-  bool lined = false;          // the cloud is sampled along lines (kLinedShare)
+  unsigned k = 0;                 // the parameter's, or more in a cloud sampled along lines
+  std::vector<uint32_t> knn;      // k per point, nearest first, the point itself excluded
+  std::vector<float> spacing;     // mean distance to the nearest few neighbours (work units); in
+                                  // a cloud sampled along lines, at least most of the gap to the
+                                  // nearest neighbour off the point's line
+  bool thin_walls = false;        // the cloud's walls are two or three spacings thick: local
+                                  // planes look past the far sheet (plane_normal)
+  bool lined = false;             // the cloud is sampled along lines (kLinedShare)
+  std::vector<uint8_t> isolated;  // per point, 1 for a stray point (isolated_points.hpp); empty
+                                  // when the cloud has none
 
   const uint32_t *of(uint32_t i) const { return knn.data() + std::size_t(i) * k; }
+  bool alone(uint32_t i) const { return !isolated.empty() && isolated[i] != 0; }
 };
 
 // Parallel over points (TBB); the result does not depend on the number of threads.

@@ -23,7 +23,7 @@ void OppositeAngleSearch::sphere_points(uint32_t a, uint32_t b, std::vector<uint
       uint32_t p = list[j];
       if (listed_.has(p)) continue;
       listed_.set(p);
-      if (norm2(points_.work[p] - m) < r2) out.push_back(p);
+      if (norm2(points_.work[p] - m) < r2 && !nb_.alone(p)) out.push_back(p);
     }
   }
 }

@@ -23,7 +23,8 @@ class OppositeAngleSearch {
  public:
   OppositeAngleSearch(const PointSet &points, const Neighborhood &nb, const Params &params);
 
-  // Points of the k-NN lists of a and b that lie inside the sphere of segment ab.
+  // Points of the k-NN lists of a and b that lie inside the sphere of segment ab, isolated
+  // points left out.
   void sphere_points(uint32_t a, uint32_t b, std::vector<uint32_t> &out);
   // Candidates from `pool` other than a, b and `exclude`, strictly on the side `side` points
   // to (side = 0 accepts both sides; with `behind`, those on the other side or on the plane

@@ -17,6 +17,7 @@
 
 #include "core/finish.hpp"
 #include "core/growth_state.hpp"
+#include "core/isolated_points.hpp"
 #include "core/near_duplicates.hpp"
 #include "core/neighbors.hpp"
 #include "core/point_set.hpp"
@@ -106,11 +107,12 @@ std::optional<Result> run_stages_once(double *xyz, std::size_t count, const Para
       report(MOA_STAGE_NEIGHBORS, 0.5 + 0.5 * f);
     });
     index.reset();
-    st.stage_ms[MOA_STAGE_NEIGHBORS] = ms_since(t);
     if (merged.empty()) {
       merged = near_duplicates(points, nb);
       if (!merged.empty()) return std::nullopt;
     }
+    mark_isolated_points(points, nb);
+    st.stage_ms[MOA_STAGE_NEIGHBORS] = ms_since(t);
 
     GrowthState g(points, nb, params, median_spacing(nb), st);
 

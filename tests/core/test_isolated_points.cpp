@@ -1,0 +1,107 @@
+// Stray points marked before Algorithm 1 (src/core/isolated_points.hpp): none on clean samples,
+// sparse ones of a density gradient and of a density step included; on a torus with stray points in
+// the volume around it, only stray points, and most of those standing off the surface; the same
+// marks with one thread as with two.
+#include <tbb/task_arena.h>
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/isolated_points.hpp"
+#include "core/kd_tree.hpp"
+#include "core/neighbors.hpp"
+#include "core/point_set.hpp"
+#include "support/shapes.hpp"
+
+// cmocka last: its macros clash with names in the standard headers.
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+extern "C" {  // this cmocka's header has no C++ guard of its own
+#include <cmocka.h>
+}
+
+namespace {
+
+using moa::test::Points;
+
+constexpr double kR = 1.0, kTube = 0.35;
+constexpr std::size_t kTorusPoints = 6000;
+
+// The caller's indices of the marked points, in increasing order.
+std::vector<std::size_t> marked(const Points &p, unsigned threads) {
+  std::vector<std::size_t> out;
+  tbb::task_arena arena(static_cast<int>(threads));
+  arena.execute([&] {
+    const moa::PointSet points = moa::prepare_points(p.data(), p.size() / 3, {});
+    const moa::KdIndex index(points.work);
+    moa::Neighborhood nb = moa::compute_neighbors(index, 20, [](double) {});
+    moa::mark_isolated_points(points, nb);
+    std::vector<char> flag(p.size() / 3, 0);
+    for (uint32_t i = 0; i < points.size(); ++i)
+      if (nb.alone(i)) flag[points.original[i]] = 1;
+    for (std::size_t i = 0; i < flag.size(); ++i)
+      if (flag[i]) out.push_back(i);
+  });
+  return out;
+}
+
+double torus_distance(const double *p) {
+  const double ring = std::hypot(p[0], p[1]) - kR;
+  return std::fabs(std::hypot(ring, p[2]) - kTube);
+}
+
+void clean_samples_have_none(void **) {
+  const Points torus = moa::test::torus_random(kTorusPoints, kR, kTube, 5);
+  assert_int_equal(marked(torus, 2).size(), 0);
+  // Fifty times denser at one end than at the other: the sparse end is no stray point.
+  const Points sparse_end =
+      moa::test::density_gradient(moa::test::torus_random(30000, kR, kTube, 6), 50, 7);
+  assert_int_equal(marked(sparse_end, 2).size(), 0);
+  const Points coarse = moa::test::sphere_random(200, 1.0, 8);
+  assert_int_equal(marked(coarse, 2).size(), 0);
+  // A sphere sampled ten times denser above its equator: the sparse points along the step are
+  // over four times sparser than their neighbours, but they lie in their plane.
+  const Points sphere = moa::test::sphere_random(40000, 1.0, 10);
+  Points step;
+  moa::test::Rng keep(10);
+  for (std::size_t i = 0; i < sphere.size(); i += 3)
+    if (sphere[i + 2] > 0 || keep.uniform() < 0.1)
+      step.insert(step.end(), &sphere[i], &sphere[i + 3]);
+  assert_int_equal(marked(step, 2).size(), 0);
+}
+
+void stray_points_are_marked(void **) {
+  // 5 % stray points, uniform in the box a fifth larger than the torus's.
+  Points p = moa::test::torus_random(kTorusPoints, kR, kTube, 9);
+  moa::test::Rng rng(9);
+  const double half[3] = {1.2 * (kR + kTube), 1.2 * (kR + kTube), 1.2 * kTube};
+  for (std::size_t i = 0; i < kTorusPoints / 20; ++i)
+    for (double h : half) p.push_back(rng.uniform(-h, h));
+  const std::vector<std::size_t> flagged = marked(p, 2);
+  // The torus's spacing is about 0.026: strays four of them off the surface stand alone.
+  std::size_t far = 0, far_marked = 0;
+  for (std::size_t i = kTorusPoints; i < p.size() / 3; ++i) far += torus_distance(&p[3 * i]) > 0.1;
+  for (std::size_t i : flagged) {
+    if (i < kTorusPoints) fail_msg("torus point %zu marked as a stray point", i);
+    far_marked += torus_distance(&p[3 * i]) > 0.1;
+  }
+  if (2 * far_marked < far)
+    fail_msg("%zu of %zu stray points far off the torus marked", far_marked, far);
+  // The marks do not depend on the number of threads.
+  assert_true(marked(p, 1) == flagged);
+}
+
+}  // namespace
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(clean_samples_have_none),
+      cmocka_unit_test(stray_points_are_marked),
+  };
+  return cmocka_run_group_tests(tests, nullptr, nullptr);
+}
