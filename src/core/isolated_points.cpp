@@ -23,7 +23,6 @@ namespace {
 // 39-51 % with 5 % and 17-22 % with 20 %, and no surface point.
 constexpr double kIsolation = 4.0;
 constexpr int kRounds = 3;
-constexpr unsigned kOwnSpacing = 6;  // as Neighborhood::spacing
 // A point that stands off the plane of its neighbours by less than this share of its own
 // spacing lies on their surface, however sparse it is next to them: on a sphere sampled ten
 // times denser on one half, the sparse points along the step measure up to 0.14; stray points
@@ -45,7 +44,7 @@ bool stands_alone(const std::vector<Vec3> &w, const Neighborhood &nb,
     }
   if (kept.size() < 3) return true;  // its list is all but stray points
   double own = 0;
-  const std::size_t nearest = std::min<std::size_t>(kOwnSpacing, kept.size());
+  const std::size_t nearest = std::min<std::size_t>(kSpacingNeighbors, kept.size());
   for (std::size_t j = 0; j < nearest; ++j) own += dist(w[i], w[kept[j]]);
   own /= double(nearest);
   const auto mid = around.begin() + std::ptrdiff_t(around.size() / 2);

@@ -75,12 +75,14 @@ class Builder {
     const uint32_t blocks = ((n - 1) >> kBlockBits) + 1;
     std::vector<uint32_t> start(blocks + 1, 0);
     seed_order_.clear();
+    // The points of the region (the whole cloud without one), stray points left out.
+    auto seeds = [&](uint32_t i) { return (!region_ || region_->has(i)) && !g_.nb.alone(i); };
     for (uint32_t i = 0; i < n; ++i)
-      if ((!region_ || region_->has(i)) && !g_.nb.alone(i)) ++start[seed_block(i) + 1];
+      if (seeds(i)) ++start[seed_block(i) + 1];
     for (uint32_t b = 0; b < blocks; ++b) start[b + 1] += start[b];
     seed_order_.resize(start[blocks]);
     for (uint32_t i = 0; i < n; ++i)
-      if ((!region_ || region_->has(i)) && !g_.nb.alone(i)) seed_order_[start[seed_block(i)]++] = i;
+      if (seeds(i)) seed_order_[start[seed_block(i)]++] = i;
     next_seed_ = 0;
   }
 

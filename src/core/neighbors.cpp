@@ -14,8 +14,6 @@
 namespace moa {
 namespace {
 
-constexpr unsigned kSpacingNeighbors = 6;
-
 // Anisotropic samples: CT and MRI contour stacks, scanner stripes. Points lie close together
 // along lines that are several times farther apart, so a point's nearest neighbours all lie on
 // its own line, and their mean distance measures the line, not the gaps between lines, which

@@ -12,6 +12,9 @@
 
 namespace moa {
 
+// A point's spacing is its mean distance to this many of its nearest neighbours.
+inline constexpr unsigned kSpacingNeighbors = 6;
+
 struct Neighborhood {
   unsigned k = 0;                 // the parameter's, or more in a cloud sampled along lines
   std::vector<uint32_t> knn;      // k per point, nearest first, the point itself excluded
