@@ -15,6 +15,11 @@ namespace moa {
 // A point's spacing is its mean distance to this many of its nearest neighbours.
 inline constexpr unsigned kSpacingNeighbors = 6;
 
+// Marks of stray points (Neighborhood::isolated): beside a surface, or deep in the volume
+// among other stray points.
+inline constexpr uint8_t kNearSurface = 1;
+inline constexpr uint8_t kInTheVolume = 2;
+
 struct Neighborhood {
   unsigned k = 0;                 // the parameter's, or more in a cloud sampled along lines
   std::vector<uint32_t> knn;      // k per point, nearest first, the point itself excluded
@@ -24,11 +29,12 @@ struct Neighborhood {
   bool thin_walls = false;        // the cloud's walls are two or three spacings thick: local
                                   // planes look past the far sheet (plane_normal)
   bool lined = false;             // the cloud is sampled along lines (kLinedShare)
-  std::vector<uint8_t> isolated;  // per point, 1 for a stray point (isolated_points.hpp); empty
-                                  // when the cloud has none
+  std::vector<uint8_t> isolated;  // per point, kNearSurface or kInTheVolume for a stray point
+                                  // (isolated_points.hpp), else 0; empty when the cloud has none
 
   const uint32_t *of(uint32_t i) const { return knn.data() + std::size_t(i) * k; }
   bool alone(uint32_t i) const { return !isolated.empty() && isolated[i] != 0; }
+  bool in_the_volume(uint32_t i) const { return !isolated.empty() && isolated[i] == kInTheVolume; }
 };
 
 // Parallel over points (TBB); the result does not depend on the number of threads.

@@ -106,6 +106,7 @@ class PointTaker {
   void host_faces(uint32_t p, double spacing) {
     const auto &w = g_.points.work;
     const double limit = kMaxHeight * spacing;
+    const bool in_the_volume = g_.nb.in_the_volume(p);
     const Vec3 reach{limit, limit, limit};
     nearby_.clear();
     g_.crossings.faces_in_box(w[p] - reach, w[p] + reach, g_.mesh, nearby_);
@@ -123,7 +124,12 @@ class PointTaker {
       if (outside > kMaxOutside) continue;
       Vec3 n = normalized(cross(w[t[1]] - w[t[0]], w[t[2]] - w[t[0]]));
       double h = std::fabs(dot(w[p] - w[t[0]], n));
-      if (h <= limit) hosts_.push_back({outside > 0, h, t});
+      double face_limit = limit;
+      if (in_the_volume) {
+        const auto &sp = g_.nb.spacing;
+        face_limit = std::min(limit, kMaxHeight * (double(sp[t[0]]) + sp[t[1]] + sp[t[2]]) / 3);
+      }
+      if (h <= face_limit) hosts_.push_back({outside > 0, h, t});
     }
     std::sort(hosts_.begin(), hosts_.end());
   }

@@ -83,19 +83,32 @@ double torus_distance(const double *p) {
   return std::fabs(std::hypot(ring, p[2]) - kTorusTube);
 }
 
+// `percent` % of stray points, uniform in the volume a fifth larger than the torus's box, as a
+// photogrammetry cloud holds them.
+Case make_torus_outliers(std::size_t percent) {
+  Points p = torus_random(kTorusPoints, kTorusR, kTorusTube, 38);
+  Rng rng(38);
+  const double half[3] = {1.2 * (kTorusR + kTorusTube), 1.2 * (kTorusR + kTorusTube),
+                          1.2 * kTorusTube};
+  for (std::size_t i = 0; i < kTorusPoints * percent / 100; ++i)
+    for (double h : half) p.push_back(rng.uniform(-h, h));
+  return make_case("torus with " + std::to_string(percent) + " % stray points", p);
+}
+
+// 5 %: they used to span triangles among themselves, hang from the surface by a vertex and take
+// more in: 6 pieces, 112 boundary edges, genus 3.
 const Case &torus_outliers_case() {
-  // 5 % of stray points, uniform in the volume a fifth larger than the torus's box, as a
-  // photogrammetry cloud holds them. They used to span triangles among themselves, hang from
-  // the surface by a vertex and take more in: 6 pieces, 112 boundary edges, genus 3.
-  static const Case c = [] {
-    Points p = torus_random(kTorusPoints, kTorusR, kTorusTube, 38);
-    Rng rng(38);
-    const double half[3] = {1.2 * (kTorusR + kTorusTube), 1.2 * (kTorusR + kTorusTube),
-                            1.2 * kTorusTube};
-    for (std::size_t i = 0; i < kTorusPoints / 20; ++i)
-      for (double h : half) p.push_back(rng.uniform(-h, h));
-    return make_case("torus with 5 % stray points", p);
-  }();
+  static const Case c = make_torus_outliers(5);
+  return c;
+}
+
+// 15 %: most stray points lie among each other, where they used to span faces that the loop
+// module filled and widened round after round (2.1 s, now 0.9 s). The contract and determinism
+// only: in this flat box (the torus's, a fifth larger) about a thousand stray points lie in
+// layers within a few spacings of the surface and are taken in, before as now, 272 of them
+// over four spacings off it.
+const Case &many_outliers_case() {
+  static const Case c = make_torus_outliers(15);
   return c;
 }
 
@@ -272,6 +285,7 @@ MOA_CONTRACT_TESTS(parallel_sheets)
 MOA_CONTRACT_TESTS(thin_slab)
 MOA_CONTRACT_TESTS(octahedron_samples)
 MOA_CONTRACT_TESTS(torus_outliers)
+MOA_CONTRACT_TESTS(many_outliers)
 MOA_CONTRACT_TESTS(twin_torus)
 MOA_CONTRACT_TESTS(jittered_torus)
 // Its stats are checked by the other cases: how many of its pairs merge is not known exactly.
@@ -283,6 +297,7 @@ static void test_overlap_torus_deterministic(void **) {
 static void test_torus_outliers_left_out(void **) {
   MOA_EXPECT(torus_outliers_failure(torus_outliers_case()));
 }
+
 
 static void test_twin_torus_merged_and_closed(void **) {
   MOA_EXPECT(twin_torus_failure(twin_torus_case()));
@@ -304,6 +319,7 @@ int main(void) {
       MOA_CONTRACT_ENTRIES(octahedron_samples),
       MOA_CONTRACT_ENTRIES(torus_outliers),
       cmocka_unit_test(test_torus_outliers_left_out),
+      MOA_CONTRACT_ENTRIES(many_outliers),
       MOA_CONTRACT_ENTRIES(twin_torus),
       cmocka_unit_test(test_twin_torus_merged_and_closed),
       MOA_CONTRACT_ENTRIES(jittered_torus),
