@@ -28,8 +28,8 @@ namespace {
 // and 2 of cow's vertices (same meshes), 1-2 corner points of thin plates. On 52 clouds of
 // 10,000-20,000-point samples with 1-50 % stray points, 4 marked 14-92 % (73 % in the median)
 // of those 1-4 spacings off the surface at 5-20 %, 3 marks 37-99 % (92 %); no point on the
-// surface either way. A stray point
-// close to a surface is woven into it as a spike, or keeps a hole open beside it.
+// surface either way. A stray point close to a surface is woven into it as a spike, or keeps a
+// hole open beside it.
 constexpr double kIsolation = 3.0;
 constexpr int kRounds = 3;
 // A point that stands off the plane of its neighbours by less than this share of its own
@@ -89,8 +89,7 @@ bool stands_alone(const std::vector<Vec3> &w, const Neighborhood &nb,
 
 // Whether point i is a stray point in the volume (kVolumeSparse); `typical` is the cloud's
 // median spacing.
-bool in_the_volume(const std::vector<Vec3> &w, const Neighborhood &nb, uint32_t i,
-                   double typical) {
+bool in_the_volume(const std::vector<Vec3> &w, const Neighborhood &nb, uint32_t i, double typical) {
   if (double(nb.spacing[i]) <= kVolumeSparse * typical) return false;
   const PcaFrame f = pca_frame(w, i, nb.of(i), std::min(nb.k, kVolumeNeighbors));
   return f.spread[1] > 0 && std::sqrt(std::max(0.0, f.spread[0]) / f.spread[1]) > kVolumeThickness;
@@ -106,11 +105,12 @@ void mark_isolated_points(const PointSet &points, Neighborhood &nb) {
   const std::size_t n = points.size();
   std::vector<uint8_t> isolated(n, 0), next(n, 0);
   const double typical = median_spacing(nb);
-  tbb::parallel_for(
-      tbb::blocked_range<std::size_t>(0, n, 1024), [&](const tbb::blocked_range<std::size_t> &r) {
-        for (std::size_t i = r.begin(); i != r.end(); ++i)
-          if (in_the_volume(points.work, nb, uint32_t(i), typical)) isolated[i] = kInTheVolume;
-      });
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1024),
+                    [&](const tbb::blocked_range<std::size_t> &r) {
+                      for (std::size_t i = r.begin(); i != r.end(); ++i)
+                        if (in_the_volume(points.work, nb, uint32_t(i), typical))
+                          isolated[i] = kInTheVolume;
+                    });
   for (int round = 0; round < kRounds; ++round) {
     // Each round reads the marks of the one before only: the same marks for any thread count.
     tbb::parallel_for(

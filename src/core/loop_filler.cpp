@@ -1158,8 +1158,8 @@ void fill_loops(GrowthState &g, const std::function<void(double)> &tick) {
   report(0.9);
   if (g.params.take_in_points != 0) take_in_points(g);
   LoopFiller(g).close_at_sharp_edges([&](double f) { report(0.95 + 0.05 * f); });
-  // Stray points that the take-in joined to such a bubble, or that closed it with the last
-  // round, leave with it.
+  // The take-in and the round above add faces after the last drop: a bubble that stray points
+  // closed among themselves goes now.
   g.stats.triangles_removed += LoopFiller(g).drop_stray_pieces(false);
   g.stats.boundary_loops_after = LoopFiller(g).count_loops();
   report(1.0);

@@ -315,16 +315,17 @@ static void test_parallel_pass_progress_and_cancel(void **state) {
 /* On bad input the loop module can run for seconds (stray points through the volume: about
  * 25 s for 20,000 points with no surface at all); it reports progress from inside its passes,
  * so that a cancellation takes effect within a fraction of a second. A sphere of 800 points
- * with 160 stray points through its bounding cube, not smoothed (the stray points make it
+ * with 320 stray points through its bounding cube, not smoothed (the stray points make it
  * look noisy in part, and the smoothed copy spares the loop module much of its work): the loop
- * module reports 38 times (43 before the stray points standing alone were set aside), where
+ * module reports 75 times (with 160 stray points it reported 38 times before the stray
+ * points in the volume were set aside too, 26 since), where
  * reports between its passes and steps alone come at most 25 times (the start, 6 rounds of 3
  * passes, 3 steps after them, the 3 passes of the round for sharp edges; 20 before the polls
  * came); and a cancellation halfway through its reports stops the run and leaves the context
  * usable. */
 static void test_loop_module_progress_and_cancel(void **state) {
   moa_ctx *ctx = (moa_ctx *)*state;
-  const size_t surface = 800, stray = 160, count = surface + stray;
+  const size_t surface = 800, stray = 320, count = surface + stray;
   double *xyz = (double *)malloc(3 * count * sizeof(double));
   uint64_t seed = 12345;
   ProgressLog log;
