@@ -104,9 +104,9 @@ const Case &torus_outliers_case() {
 
 // 15 %: most stray points lie among each other, where they used to span faces that the loop
 // module filled and widened round after round (2.1 s, now 0.9 s). The contract and determinism
-// only: in this flat box (the torus's, a fifth larger) about a thousand stray points lie in
-// layers within a few spacings of the surface and are taken in, before as now, 272 of them
-// over four spacings off it.
+// only: in this flat box (the torus's, a fifth larger) the stray points crowd within a few
+// spacings of the surface, the cloud looks noisy, the smoothed copy pulls them onto the
+// surface, and about a thousand are woven in, before as now (272 over four spacings off it).
 const Case &many_outliers_case() {
   static const Case c = make_torus_outliers(15);
   return c;
@@ -297,7 +297,6 @@ static void test_overlap_torus_deterministic(void **) {
 static void test_torus_outliers_left_out(void **) {
   MOA_EXPECT(torus_outliers_failure(torus_outliers_case()));
 }
-
 
 static void test_twin_torus_merged_and_closed(void **) {
   MOA_EXPECT(twin_torus_failure(twin_torus_case()));
