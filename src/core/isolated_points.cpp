@@ -92,7 +92,7 @@ bool stands_alone(const std::vector<Vec3> &w, const Neighborhood &nb,
 bool in_the_volume(const std::vector<Vec3> &w, const Neighborhood &nb, uint32_t i, double typical) {
   if (double(nb.spacing[i]) <= kVolumeSparse * typical) return false;
   const PcaFrame f = pca_frame(w, i, nb.of(i), std::min(nb.k, kVolumeNeighbors));
-  return f.spread[1] > 0 && std::sqrt(std::max(0.0, f.spread[0]) / f.spread[1]) > kVolumeThickness;
+  return flatness_ratio(f) > kVolumeThickness;
 }
 
 }  // namespace

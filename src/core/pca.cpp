@@ -1,6 +1,8 @@
 #include "core/pca.hpp"
 
 #include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
 
 namespace moa {
 
@@ -26,6 +28,10 @@ PcaFrame pca_frame(const std::vector<Vec3> &p, uint32_t self, const uint32_t *nb
     f.spread[a] = es.eigenvalues()(a);
   }
   return f;
+}
+
+double flatness_ratio(const PcaFrame &f) {
+  return f.spread[1] > 0 ? std::sqrt(std::max(0.0, f.spread[0]) / f.spread[1]) : 0.0;
 }
 
 }  // namespace moa

@@ -18,4 +18,8 @@ struct PcaFrame {
 // The frame of point `self` and its k neighbours `nb`.
 PcaFrame pca_frame(const std::vector<Vec3> &p, uint32_t self, const uint32_t *nb, unsigned k);
 
+// Thickness over width of a frame's neighbourhood: the spread off the plane against the larger
+// spread in it, both as standard deviations; 0 when the neighbourhood has no width.
+double flatness_ratio(const PcaFrame &f);
+
 }  // namespace moa

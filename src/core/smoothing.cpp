@@ -82,12 +82,6 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
-// Thickness over width of a neighbourhood: the spread off the plane against the larger spread
-// in it, both as standard deviations.
-double flatness_ratio(const PcaFrame &f) {
-  return f.spread[1] > 0 ? std::sqrt(std::max(0.0, f.spread[0]) / f.spread[1]) : 0.0;
-}
-
 // The point moved onto the quadric h(u, v) fitted to its neighbourhood in the frame's plane;
 // onto the plane itself when the neighbourhood cannot support a quadric.
 Vec3 project_onto_quadric(const std::vector<Vec3> &p, uint32_t self, const uint32_t *nb,
