@@ -87,6 +87,10 @@ std::size_t repair_inside_out_patches(GrowthState &g);
 // Cuts the bridges that made a handle with a waist of three or four edges, near the faces
 // numbered from first_face on (see handle_cut.cpp); returns how many.
 std::size_t cut_thin_handles(GrowthState &g, std::size_t first_face);
+// Cuts the handles made by a channel of air about a spacing wide (under a bridge across a
+// narrow gap) whose waist is five to eight edges, near the faces numbered from first_face
+// on; returns how many.
+std::size_t cut_narrow_tunnels(GrowthState &g, std::size_t first_face);
 
 // Algorithm 2, the loop module (paper §3.5.2).
 void fill_loops(GrowthState &g, const std::function<void(double)> &tick);

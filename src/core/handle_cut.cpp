@@ -7,9 +7,14 @@
 // go, the cycle is capped on the other side, and the hole left is patched (both by
 // hole_patch.hpp). All of it passes the judgment but its test for a second layer (a bridge is
 // a flattened tube, so its cap lies close over the faces beside it), or nothing changes.
+// Narrow tunnels under such a bridge, whose waist is longer, are cut the same way (below).
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <initializer_list>
+#include <limits>
 #include <tuple>
+#include <unordered_map>
 #include <vector>
 
 #include "core/growth_state.hpp"
@@ -25,9 +30,21 @@ constexpr std::size_t kSearchBudget = 200000;
 // Longest loop around the removed faces that is patched (the patch costs its cube).
 constexpr std::size_t kMaxLoop = 64;
 
-// A waist: its corners in order (three or four).
+// Corners of the longest waist looked for (the narrow tunnels below).
+constexpr int kMaxCorners = 8;
+using Corners = std::array<uint32_t, kMaxCorners>;
+
+// The corners listed, the rest of the array kNone.
+Corners corners_of(std::initializer_list<uint32_t> list) {
+  Corners c;
+  c.fill(kNone);
+  std::copy(list.begin(), list.end(), c.begin());
+  return c;
+}
+
+// A waist: its corners in order (three to kMaxCorners).
 struct Cycle {
-  std::array<uint32_t, 4> corners{kNone, kNone, kNone, kNone};
+  Corners corners = corners_of({});
   int n = 0;
   bool has(uint32_t x) const {
     return std::find(corners.begin(), corners.begin() + n, x) != corners.begin() + n;
@@ -38,7 +55,7 @@ struct Cycle {
 
 // The cycle with these corners, in a form that lists each cycle once: rotated to start at its
 // lowest corner, running toward the lower of that corner's two neighbours.
-Cycle canonical(std::array<uint32_t, 4> c, int n) {
+Cycle canonical(Corners c, int n) {
   std::rotate(c.begin(), std::min_element(c.begin(), c.begin() + n), c.begin() + n);
   if (c[n - 1] < c[1]) std::reverse(c.begin() + 1, c.begin() + n);
   Cycle cycle;
@@ -48,7 +65,7 @@ Cycle canonical(std::array<uint32_t, 4> c, int n) {
 }
 
 // Whether every edge of the cycle has two faces.
-bool edges_full(const MeshState &mesh, const std::array<uint32_t, 4> &c, int n) {
+bool edges_full(const MeshState &mesh, const Corners &c, int n) {
   for (int i = 0; i < n; ++i) {
     uint32_t fs[2];
     if (mesh.edge_faces(c[i], c[(i + 1) % n], fs) != 2) return false;
@@ -80,7 +97,7 @@ std::vector<Cycle> short_cycles(const MeshState &mesh, const std::vector<uint32_
       for (uint32_t x : ring_v) {
         if (x == u) continue;
         if (near.has(x)) {
-          const std::array<uint32_t, 4> c{u, v, x, kNone};
+          const Corners c = corners_of({u, v, x});
           if (v < x && mesh.face_with({u, v, x}) == kNone && edges_full(mesh, c, 3))
             cycles.push_back(canonical(c, 3));
         } else if (!second.has(x)) {
@@ -98,7 +115,7 @@ std::vector<Cycle> short_cycles(const MeshState &mesh, const std::vector<uint32_
         for (std::size_t j = i + 1; j < common.size(); ++j) {
           uint32_t fs[2];
           if (mesh.edge_faces(common[i], common[j], fs) > 0) continue;  // a chord
-          const std::array<uint32_t, 4> c{u, common[i], x, common[j]};
+          const Corners c = corners_of({u, common[i], x, common[j]});
           if (edges_full(mesh, c, 4)) cycles.push_back(canonical(c, 4));
         }
     }
@@ -107,6 +124,251 @@ std::vector<Cycle> short_cycles(const MeshState &mesh, const std::vector<uint32_
   cycles.erase(std::unique(cycles.begin(), cycles.end()), cycles.end());
   return cycles;
 }
+
+// Narrow tunnels. Where two parts of the surface lie closer than the spacing (the lips at a
+// mouth's corner), a bridge between them can leave a channel of air under it about a spacing
+// wide: the handle's shortest way round then circles air, not a tube of the surface, and is
+// five to eight edges long. A thin handle of the sampled surface is circled by a waist as
+// long, but around a tube: its corners' normals point away from the waist's axis, where a
+// tunnel's point toward it. Only tunnels are cut; a tunnel that narrow is below what the
+// sampling can show.
+constexpr int kMinTunnelCorners = 5;
+// Longest waist round a tunnel, in local spacings (the mean over its corners of the points'
+// spacings, neighbors.hpp): homer's mouth-corner tunnel on its 4,930 vertices is 6.2 round,
+// and so is the tube of the elephant's thin handle on its 2,775 (6.4).
+constexpr double kMaxTunnelWaist = 8.0;
+// Every corner's normal must lean toward the axis by at least this cosine (homer's tunnel:
+// 0.34 to 0.89; the elephant's tube leans away from it by 0.81 to 0.97).
+constexpr double kMinInwardLean = 0.2;
+// Sine of the least rise of an edge along a tunnel's waist off its corner's tangent plane
+// (an eight-edge waist: 22.5 degrees, 0.38), with a margin for uneven corners.
+constexpr double kMinBendRise = 0.25;
+// How far the search for a waist goes from its start, in waists (half of one, and a margin).
+constexpr double kBranchReach = 0.6;
+
+class TunnelFinder {
+ public:
+  explicit TunnelFinder(GrowthState &g)
+      : g_(g),
+        dist_(g.points.size(), kFar),
+        pred_(g.points.size(), kNone),
+        hops_(g.points.size(), 0),
+        ring_start_(g.points.size(), kNone),
+        ring_size_(g.points.size(), 0) {}
+
+  // The shortest tunnel waist through each vertex of `at` (with a closed fan, on a piece
+  // that can have handles), where it has one; whether it separates the surface is left to
+  // HandleCutter::cut.
+  std::vector<Cycle> find(const std::vector<uint32_t> &at) {
+    std::vector<Cycle> found;
+    if (at.empty()) return found;
+    measure_pieces();
+    Cycle c;
+    for (uint32_t s : at)
+      if (g_.mesh.fan_closed(s) && pieces_[piece_of(s)].may_have_handles() && bends_in(s) &&
+          shortest_through(s, c))
+        found.push_back(c);
+    std::sort(found.begin(), found.end());
+    found.erase(std::unique(found.begin(), found.end()), found.end());
+    return found;
+  }
+
+ private:
+  static constexpr double kFar = std::numeric_limits<double>::infinity();
+
+  // A piece of the mesh (an orientation class: faces joined by edges): its signed volume,
+  // which tells which way it faces, and what its Euler characteristic needs.
+  struct Piece {
+    double volume = 0;
+    std::size_t faces = 0, open_edges = 0, vertices = 0;
+    // Whether V - E + F (2 - 2 genus - loops) leaves room for a handle: a piece with open
+    // edges has at least one loop.
+    bool may_have_handles() const {
+      const double chi = double(vertices) - 0.5 * double(3 * faces + open_edges) + double(faces);
+      return chi <= (open_edges == 0 ? 0.0 : -1.0);
+    }
+  };
+
+  uint32_t piece_of(uint32_t v) { return g_.mesh.component(g_.mesh.faces_at(v).front()); }
+
+  void measure_pieces() {
+    const std::vector<Vec3> &w = g_.points.work;
+    for (uint32_t f = 0; f < g_.mesh.face_count(); ++f) {
+      if (!g_.mesh.alive(f)) continue;
+      const Tri t = g_.mesh.oriented(f);
+      Piece &p = pieces_[g_.mesh.component(f)];
+      p.volume += dot(w[t[0]] - w[0], cross(w[t[1]] - w[0], w[t[2]] - w[0]));
+      ++p.faces;
+      for (int i = 0; i < 3; ++i) {
+        uint32_t fs[2];
+        p.open_edges += g_.mesh.edge_faces(t[i], t[(i + 1) % 3], fs) == 1;
+      }
+    }
+    for (uint32_t v = 0; v < g_.points.size(); ++v)
+      if (g_.mesh.is_used(v)) ++pieces_[piece_of(v)].vertices;
+  }
+
+  // Whether an edge from v rises steeply off v's tangent plane on the outer side: the surface
+  // bends in as tightly as round a tunnel a few edges round (six edges turn 60 degrees from
+  // corner to corner, so an edge along the waist rises by 30). Most vertices are not near
+  // one, and this spares them the search.
+  bool bends_in(uint32_t v) {
+    const std::vector<Vec3> &w = g_.points.work;
+    const Vec3 &normal = outward_normal(v);
+    const double length = norm(normal);
+    if (!(length > 0)) return false;
+    uint32_t count;
+    const uint32_t *around = ring(v, count);
+    for (uint32_t j = 0; j < count; ++j) {
+      const Vec3 edge = w[around[j]] - w[v];
+      if (dot(edge, normal) > kMinBendRise * norm(edge) * length) return true;
+    }
+    return false;
+  }
+
+  // The vertices joined to v by an edge, listed on first use.
+  const uint32_t *ring(uint32_t v, uint32_t &count) {
+    if (ring_start_[v] == kNone) {
+      ring_start_[v] = uint32_t(ring_pool_.size());
+      for (uint32_t f : g_.mesh.faces_at(v))
+        for (uint32_t x : g_.mesh.stored(f))
+          if (x != v && std::find(ring_pool_.begin() + ring_start_[v], ring_pool_.end(), x) ==
+                            ring_pool_.end())
+            ring_pool_.push_back(x);
+      ring_size_[v] = uint32_t(ring_pool_.size()) - ring_start_[v];
+    }
+    count = ring_size_[v];
+    return ring_pool_.data() + ring_start_[v];
+  }
+
+  // Dijkstra from s over the edges, up to half the corners of the longest waist; then the
+  // cycles that close through an edge between two of its branches, shortest first.
+  bool shortest_through(uint32_t s, Cycle &out) {
+    const std::vector<Vec3> &w = g_.points.work;
+    // Each corner is at most half the waist from s, the shorter way round; the corners'
+    // spacings may be larger than s's own.
+    const double reach = kBranchReach * kMaxTunnelWaist * g_.nb.spacing[s];
+    for (uint32_t v : touched_) dist_[v] = kFar;
+    touched_.assign(1, s);
+    settled_.clear();
+    dist_[s] = 0;
+    pred_[s] = kNone;
+    hops_[s] = 0;
+    heap_.assign(1, {0.0, s});
+    while (!heap_.empty()) {
+      std::pop_heap(heap_.begin(), heap_.end(), std::greater<>());
+      const auto [d, u] = heap_.back();
+      heap_.pop_back();
+      if (d > dist_[u]) continue;
+      settled_.push_back(u);
+      if (hops_[u] >= kMaxCorners / 2) continue;
+      uint32_t count;
+      const uint32_t *around = ring(u, count);
+      for (uint32_t j = 0; j < count; ++j) {
+        const uint32_t x = around[j];
+        const double nd = d + dist(w[u], w[x]);
+        if (nd > reach || nd >= dist_[x]) continue;
+        if (dist_[x] == kFar) touched_.push_back(x);
+        dist_[x] = nd;
+        pred_[x] = u;
+        hops_[x] = uint8_t(hops_[u] + 1);
+        heap_.push_back({nd, x});
+        std::push_heap(heap_.begin(), heap_.end(), std::greater<>());
+      }
+    }
+    closing_.clear();
+    for (uint32_t u : settled_) {
+      uint32_t count;
+      const uint32_t *around = ring(u, count);
+      for (uint32_t j = 0; j < count; ++j)
+        if (const uint32_t x = around[j];
+            u < x && dist_[x] != kFar && pred_[u] != x && pred_[x] != u &&
+            hops_[u] + hops_[x] + 1 >= kMinTunnelCorners && hops_[u] + hops_[x] + 1 <= kMaxCorners)
+          closing_.push_back({dist_[u] + dist_[x] + dist(w[u], w[x]), u, x});
+    }
+    std::sort(closing_.begin(), closing_.end());
+    for (const Closing &k : closing_) {
+      // The branch to u, then back from x: the two must meet at s alone.
+      std::vector<uint32_t> &cycle = cycle_;
+      cycle.clear();
+      for (uint32_t v = k.u; v != kNone; v = pred_[v]) cycle.push_back(v);
+      std::reverse(cycle.begin(), cycle.end());
+      for (uint32_t v = k.x; v != s; v = pred_[v]) cycle.push_back(v);
+      sorted_.assign(cycle.begin(), cycle.end());
+      std::sort(sorted_.begin(), sorted_.end());
+      if (std::adjacent_find(sorted_.begin(), sorted_.end()) != sorted_.end()) continue;
+      const int n = int(cycle.size());
+      Corners c;
+      c.fill(kNone);
+      std::copy(cycle.begin(), cycle.end(), c.begin());
+      if (!edges_full(g_.mesh, c, n)) continue;
+      double spacing = 0;
+      for (uint32_t v : cycle) spacing += g_.nb.spacing[v];
+      spacing /= n;
+      if (k.length > kMaxTunnelWaist * spacing || !circles_air(cycle)) continue;
+      out = canonical(c, n);
+      return true;
+    }
+    return false;
+  }
+
+  // Whether the corners' normals all lean toward the cycle's axis (its area vector through
+  // its centroid): the cycle runs round a channel of air.
+  bool circles_air(const std::vector<uint32_t> &cycle) {
+    const std::vector<Vec3> &w = g_.points.work;
+    Vec3 centre{};
+    for (uint32_t v : cycle) centre = centre + w[v];
+    centre = centre * (1.0 / double(cycle.size()));
+    Vec3 area{};
+    for (std::size_t i = 0; i < cycle.size(); ++i)
+      area = area + cross(w[cycle[i]] - centre, w[cycle[(i + 1) % cycle.size()]] - centre);
+    if (norm(area) == 0) return false;
+    const Vec3 axis = normalized(area);
+    for (uint32_t v : cycle) {
+      const Vec3 radial = (w[v] - centre) - axis * dot(w[v] - centre, axis);
+      const Vec3 &normal = outward_normal(v);
+      const double lengths = norm(normal) * norm(radial);
+      if (!(lengths > 0) || dot(normal, radial) > -kMinInwardLean * lengths) return false;
+    }
+    return true;
+  }
+
+  // The area-weighted normal of the faces round v, facing out of its piece; computed once.
+  const Vec3 &outward_normal(uint32_t v) {
+    const auto [it, added] = normals_.try_emplace(v);
+    if (added) {
+      const std::vector<Vec3> &w = g_.points.work;
+      for (uint32_t f : g_.mesh.faces_at(v)) {
+        const Tri t = g_.mesh.oriented(f);
+        const double facing = pieces_[g_.mesh.component(f)].volume < 0 ? -1.0 : 1.0;
+        it->second = it->second + cross(w[t[1]] - w[t[0]], w[t[2]] - w[t[0]]) * facing;
+      }
+    }
+    return it->second;
+  }
+
+  struct Closing {
+    double length;
+    uint32_t u, x;
+    bool operator<(const Closing &o) const {
+      return std::tie(length, u, x) < std::tie(o.length, o.u, o.x);
+    }
+  };
+
+  GrowthState &g_;
+  std::unordered_map<uint32_t, Piece> pieces_;  // by their classes' representative faces
+  std::unordered_map<uint32_t, Vec3> normals_;  // outward_normal's, by vertex
+  // The search's distances along the edges from its start (kFar where not reached), the
+  // vertex each was reached from, and in how many edges.
+  std::vector<double> dist_;
+  std::vector<uint32_t> pred_;
+  std::vector<uint8_t> hops_;
+  std::vector<uint32_t> touched_, settled_, cycle_, sorted_;
+  // Each vertex's ring, once listed: where it starts in the pool and how long it is.
+  std::vector<uint32_t> ring_start_, ring_size_, ring_pool_;
+  std::vector<std::pair<double, uint32_t>> heap_;
+  std::vector<Closing> closing_;
+};
 
 class HandleCutter {
  public:
@@ -274,25 +536,40 @@ class HandleCutter {
   IndexMarks reached_, other_reached_;
 };
 
+// The vertices of the live faces numbered from first_face on, and of the faces around them.
+std::vector<uint32_t> vertices_near(const MeshState &mesh, std::size_t first_face) {
+  std::vector<uint32_t> at;
+  for (uint32_t f = uint32_t(first_face); f < mesh.face_count(); ++f)
+    if (mesh.alive(f))
+      for (uint32_t v : mesh.stored(f))
+        for (uint32_t h : mesh.faces_at(v)) {
+          const Tri &t = mesh.stored(h);
+          at.insert(at.end(), t.begin(), t.end());
+        }
+  std::sort(at.begin(), at.end());
+  at.erase(std::unique(at.begin(), at.end()), at.end());
+  return at;
+}
+
 }  // namespace
 
 std::size_t cut_thin_handles(GrowthState &g, std::size_t first_face) {
   // The cycles are sought only around the faces the loop module added, and one ring beyond:
   // a bridge becomes a handle when the holes beside it are closed.
-  std::vector<uint32_t> at;
-  for (uint32_t f = uint32_t(first_face); f < g.mesh.face_count(); ++f)
-    if (g.mesh.alive(f))
-      for (uint32_t v : g.mesh.stored(f))
-        for (uint32_t h : g.mesh.faces_at(v)) {
-          const Tri &t = g.mesh.stored(h);
-          at.insert(at.end(), t.begin(), t.end());
-        }
-  std::sort(at.begin(), at.end());
-  at.erase(std::unique(at.begin(), at.end()), at.end());
-  const std::vector<Cycle> cycles = short_cycles(g.mesh, at);
+  const std::vector<Cycle> cycles = short_cycles(g.mesh, vertices_near(g.mesh, first_face));
   HandleCutter cutter(g);
   std::size_t cut = 0;
   for (const Cycle &c : cycles) cut += cutter.cut(c);
+  return cut;
+}
+
+std::size_t cut_narrow_tunnels(GrowthState &g, std::size_t first_face) {
+  // Sought, like the thin handles, around the loop module's faces: those of the take-in too,
+  // which can shorten a waist by putting a point on it.
+  HandleCutter cutter(g);
+  std::size_t cut = 0;
+  const std::vector<Cycle> tunnels = TunnelFinder(g).find(vertices_near(g.mesh, first_face));
+  for (const Cycle &c : tunnels) cut += cutter.cut(c);
   return cut;
 }
 

@@ -1120,7 +1120,9 @@ void fill_loops(GrowthState &g, const std::function<void(double)> &tick) {
   g.poll = [&] { tick(reached); };
   struct PollReset {
     GrowthState &g;
-    ~PollReset() { g.poll = [] {}; }
+    ~PollReset() {
+      g.poll = [] {};
+    }
   } poll_reset{g};
 
   const std::size_t first_loop_face = g.mesh.face_count();
@@ -1158,6 +1160,8 @@ void fill_loops(GrowthState &g, const std::function<void(double)> &tick) {
   report(0.9);
   if (g.params.take_in_points != 0) take_in_points(g);
   LoopFiller(g).close_at_sharp_edges([&](double f) { report(0.95 + 0.05 * f); });
+  // The take-in can shorten a tunnel's waist to the length looked for (homer's mouth corner).
+  cut_narrow_tunnels(g, first_loop_face);
   // The take-in and the round above add faces after the last drop: a bubble that stray points
   // closed among themselves goes now.
   g.stats.triangles_removed += LoopFiller(g).drop_stray_pieces(false);
