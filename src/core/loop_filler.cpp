@@ -1120,9 +1120,7 @@ void fill_loops(GrowthState &g, const std::function<void(double)> &tick) {
   g.poll = [&] { tick(reached); };
   struct PollReset {
     GrowthState &g;
-    ~PollReset() {
-      g.poll = [] {};
-    }
+    ~PollReset() { g.poll = [] {}; }
   } poll_reset{g};
 
   const std::size_t first_loop_face = g.mesh.face_count();
