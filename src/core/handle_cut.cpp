@@ -73,6 +73,15 @@ bool edges_full(const MeshState &mesh, const Corners &c, int n) {
   return true;
 }
 
+// Appends to `out` the vertices joined to v by an edge, each once, in the order of v's faces.
+void append_ring(const MeshState &mesh, uint32_t v, std::vector<uint32_t> &out) {
+  const std::size_t start = out.size();
+  for (uint32_t f : mesh.faces_at(v))
+    for (uint32_t x : mesh.stored(f))
+      if (x != v && std::find(out.begin() + std::ptrdiff_t(start), out.end(), x) == out.end())
+        out.push_back(x);
+}
+
 // Cycles of three edges that are not one face's, and of four edges without a chord, all edges
 // with two faces, through the given vertices. From each vertex u: a three-edge cycle joins two
 // of its neighbours; a four-edge cycle runs through two of them to a vertex x two steps away.
@@ -82,9 +91,7 @@ std::vector<Cycle> short_cycles(const MeshState &mesh, const std::vector<uint32_
   std::vector<uint32_t> ring, ring_v, far, common;
   auto neighbours = [&](uint32_t v, std::vector<uint32_t> &out) {
     out.clear();
-    for (uint32_t f : mesh.faces_at(v))
-      for (uint32_t x : mesh.stored(f))
-        if (x != v && std::find(out.begin(), out.end(), x) == out.end()) out.push_back(x);
+    append_ring(mesh, v, out);
   };
   for (uint32_t u : at) {
     neighbours(u, ring);
@@ -230,11 +237,7 @@ class TunnelFinder {
   const uint32_t *ring(uint32_t v, uint32_t &count) {
     if (ring_start_[v] == kNone) {
       ring_start_[v] = uint32_t(ring_pool_.size());
-      for (uint32_t f : g_.mesh.faces_at(v))
-        for (uint32_t x : g_.mesh.stored(f))
-          if (x != v && std::find(ring_pool_.begin() + ring_start_[v], ring_pool_.end(), x) ==
-                            ring_pool_.end())
-            ring_pool_.push_back(x);
+      append_ring(g_.mesh, v, ring_pool_);
       ring_size_[v] = uint32_t(ring_pool_.size()) - ring_start_[v];
     }
     count = ring_size_[v];
