@@ -62,8 +62,8 @@ std::unique_ptr<KdIndex> smooth_if_noisy(PointSet &points, const Params &params,
     const bool forced = pass == 0 && params.smoothing == 2;
     if (!noise.noisy && !forced) break;
     const unsigned k = noise.smoothing_k ? noise.smoothing_k : kForcedSmoothingK;
-    std::vector<Vec3> smooth =
-        smoothed_points(*index, k, [&](double f) { tick((pass + f) / kMaxSmoothingPasses); });
+    std::vector<Vec3> smooth = smoothed_points(
+        *index, k, noise.thin_walls, [&](double f) { tick((pass + f) / kMaxSmoothingPasses); });
     index.reset();
     if (points.raw_work.empty()) points.raw_work = std::move(points.work);
     points.work = std::move(smooth);

@@ -44,6 +44,19 @@ constexpr double kFlatFinestScale = 0.02;
 // points were at most 1.8 times rougher (curvature alone: about 1.4), but for scan lines six
 // spacings apart (4.0, not noisy either way); on noisy clouds they are smoother.
 constexpr double kFarSheetJump = 3.0;
+// Thin walls whose finest neighbourhoods are this rough are noisy (noisy_thin_walls): two
+// concentric spheres 2.8 spacings apart give 0.02 clean, 0.07, 0.13 and 0.25 with noise of
+// 0.05, 0.1 and 0.2 spacings; only the last is left open unsmoothed.
+constexpr double kNoisyWallRoughness = 0.15;
+// ... and their medians jump by this factor from one size to the next where the far sheet
+// comes in: 2.7-7.3 on noisy plates, pipes, cups and concentric spheres 3-4 spacings thick
+// (1.8-2.3 on some whose far sheet comes in gradually, which stay as they were). Clean samples
+// rough at 10 points (coarse or irregular ones) rise by at most 1.87 (elephant at 4k points).
+constexpr double kNoisyWallJump = 2.5;
+// Half-width of the band around the plane of a point's nearest kProbeNeighbors that its
+// smoothing neighbourhood keeps on a noisy thin wall, in units of the distance to the farthest
+// of them (about two spacings).
+constexpr double kSheetBand = 0.6;
 // Noise in part of the cloud (a region scanned from farther off, a second scanner) leaves the
 // medians to the clean rest. A sample point looks noisy on its own when it is rough at the
 // small scale and some larger neighbourhood is far flatter; the cloud is noisy in part when at
@@ -241,6 +254,26 @@ void noisy_in_part(const std::vector<double> &ratios, std::size_t samples, Noise
   est = part;
 }
 
+// Thin walls with noise on their sheets. Where the neighbourhoods reach the far sheet their
+// roughness jumps (kNoisyWallJump), and no larger neighbourhood is ever as flat as the noisy
+// finest ones: the drop test cannot see the noise, or sees it at a size spanning both sheets
+// and smooths them into one. When the medians jump and the finest scale is rough, the cloud
+// is noisy; it is smoothed over the largest neighbourhood short of the jump, on the near sheet
+// only (smoothed_points). Returns whether it decided so.
+bool noisy_thin_walls(const ScaleMedians &m, NoiseEstimate &est) {
+  if (!(m[0] >= kNoisyWallRoughness)) return false;
+  for (std::size_t c = 0; c + 1 < kScaleCount && m[c] >= 0 && m[c + 1] >= 0; ++c)
+    if (m[c + 1] > kNoisyWallJump * m[c]) {
+      est.noisy = true;
+      est.thin_walls = true;
+      est.smoothing_k = kScales[c];
+      est.small_scale = m[0];
+      est.large_scale = m[c];
+      return true;
+    }
+  return false;
+}
+
 }  // namespace
 
 NoiseEstimate estimate_noise(const KdIndex &index) {
@@ -288,6 +321,7 @@ NoiseEstimate estimate_noise(const KdIndex &index) {
   const bool rough_lines = double(on_lines.size()) >= kLinedShare * double(samples) &&
                            median(on_lines) > kMinLineRoughness;
   const ScaleMedians medians = scale_medians(ratios, samples, [](std::size_t) { return true; });
+  if (noisy_thin_walls(medians, est)) return est;
   // Finest neighbourhoods that are flat have no scatter that matters, however rough the next
   // size looks: what 20 points add to 10 there is the far sheet of a thin wall (a plate or a
   // pipe two or three spacings thick), and smoothing would fold the two sheets into one.
@@ -303,7 +337,7 @@ NoiseEstimate estimate_noise(const KdIndex &index) {
   return est;
 }
 
-std::vector<Vec3> smoothed_points(const KdIndex &index, unsigned k,
+std::vector<Vec3> smoothed_points(const KdIndex &index, unsigned k, bool near_sheet_only,
                                   const std::function<void(double)> &tick) {
   const std::vector<Vec3> &work = index.points();
   const std::size_t n = work.size();
@@ -333,8 +367,21 @@ std::vector<Vec3> smoothed_points(const KdIndex &index, unsigned k,
             // A thick noisy shell holds more than k points in that ball: every s-th will do.
             const std::size_t stride = std::max<std::size_t>(1, found.size() / (2 * k));
             others.clear();
-            for (std::size_t j = 0; j < found.size(); j += stride)
-              if (found[j].first != i) others.push_back(found[j].first);
+            // On a thin wall, only the points within a band around the nearest ones' plane:
+            // the far sheet lies beyond it.
+            PcaFrame sheet{};
+            double band = 0;
+            if (near_sheet_only && got >= 4) {
+              sheet = pca_frame(work, uint32_t(i), idx.data() + 1, unsigned(got - 1));
+              band = kSheetBand * std::sqrt(d2[got - 1]);
+            }
+            for (std::size_t j = 0; j < found.size(); j += stride) {
+              if (found[j].first == i) continue;
+              if (band > 0 &&
+                  std::fabs(dot(work[found[j].first] - sheet.centroid, sheet.axis[0])) > band)
+                continue;
+              others.push_back(found[j].first);
+            }
             out[i] =
                 project_onto_quadric(work, uint32_t(i), others.data(), unsigned(others.size()));
           }

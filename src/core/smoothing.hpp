@@ -20,12 +20,14 @@ namespace moa {
 struct NoiseEstimate {
   bool noisy = false;        // the roughness shrinks as the neighbourhood grows, in the cloud
                              // or in enough of its parts; or the lines of a cloud sampled
-                             // along lines are not plane curves
+                             // along lines are not plane curves; or the sheets of a cloud of
+                             // thin walls are rough (thin_walls)
   unsigned smoothing_k = 0;  // neighbourhood size at which the cloud looks flattest
   double small_scale = 0;    // median thickness / width at 10 or 20 points, the rougher (at
                              // 10 alone when that is flat: see estimate_noise); over the
                              // noisy-looking points when the cloud is noisy in part
   double large_scale = 0;    // the same at smoothing_k points
+  bool thin_walls = false;   // noisy sheets with a far sheet just beyond smoothing_k points
 };
 
 // Looks at a fixed sample of points at several neighbourhood sizes. Thickness over width grows
@@ -38,8 +40,10 @@ NoiseEstimate estimate_noise(const KdIndex &index);
 // around it that holds about k points of a surface; except where whole regions moved several
 // times farther than the cloud's median point and they are thin parts (two sheets that one
 // quadric pulled together, not creases it rounded off): those points keep their place.
+// `near_sheet_only` (NoiseEstimate::thin_walls) fits each quadric to the points near the plane
+// of the point's nearest few only, so that a far sheet within the ball is left out.
 // Parallel over points; independent of the thread count.
-std::vector<Vec3> smoothed_points(const KdIndex &index, unsigned k,
+std::vector<Vec3> smoothed_points(const KdIndex &index, unsigned k, bool near_sheet_only,
                                   const std::function<void(double)> &tick);
 
 }  // namespace moa

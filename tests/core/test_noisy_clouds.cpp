@@ -218,7 +218,8 @@ void test_smoothing_thins_the_cloud(void **) {
   moa::KdIndex index(points.work);
   moa::NoiseEstimate e = moa::estimate_noise(index);
   assert_true(e.noisy);
-  std::vector<moa::Vec3> smooth = moa::smoothed_points(index, e.smoothing_k, [](double) {});
+  std::vector<moa::Vec3> smooth =
+      moa::smoothed_points(index, e.smoothing_k, e.thin_walls, [](double) {});
   assert_int_equal(smooth.size(), points.work.size());
   // The sphere's centre and radius in work units: the mean of the raw points and their mean
   // distance from it.
@@ -316,6 +317,54 @@ void test_hollow_ball_two_spheres(void **) {
              r.describe().c_str());
 }
 
+// The same two spheres, 12,000 points 0.05 apart (the gap is 3.2 spacings), with noise of a
+// fifth of a spacing. Each point's 10 and 20 nearest look noisy, its 40 nearest reach the far
+// sphere and look far rougher, so no neighbourhood looks flatter than the finest: unsmoothed,
+// the raw points left 200 boundary edges and joined the spheres. Smoothed over 20 neighbours
+// on the near sheet only, they are two closed spheres again.
+const Case &noisy_hollow_ball_case() {
+  static const Case c = [] {
+    const std::size_t total = 12000;
+    const std::size_t inner = std::size_t(double(total) / (1 + kOuterRadius * kOuterRadius));
+    Points p = sphere_random(inner, kInnerRadius, 95);
+    const Points outer = sphere_random(total - inner, kOuterRadius, 96);
+    p.insert(p.end(), outer.begin(), outer.end());
+    add_noise(p, 0.2 * 0.05 / bbox_diagonal(p), 97);
+    return make_case("hollow ball, noise 0.2 spacings", p);
+  }();
+  return c;
+}
+
+void test_noisy_hollow_ball_is_noisy_thin_walls(void **) {
+  const moa::NoiseEstimate e = estimate_of(noisy_hollow_ball_case().points);
+  if (!e.noisy || !e.thin_walls || e.smoothing_k > 20)
+    fail_msg("a noisy hollow ball: noisy %d, thin walls %d, smoothing over %u points",
+             int(e.noisy), int(e.thin_walls), e.smoothing_k);
+}
+
+void test_noisy_hollow_ball_two_spheres(void **) {
+  const Case &c = noisy_hollow_ball_case();
+  const ContractReport &r = c.report;
+  if (!r.closed() || r.components != 2 || r.genus_sum != 0 ||
+      double(r.vertices_used) < 0.999 * double(c.points.size() / 3))
+    fail_msg("%s: not two closed spheres using 99.9 %% of the points\n%s", c.name.c_str(),
+             r.describe().c_str());
+}
+
+// A pipe with walls 0.1 thick (outer radius 1, length 1; 12,000 points about 0.033 apart, so
+// the wall is about 3 spacings), noise of a fifth of a spacing: closed, genus 1. Unsmoothed,
+// the raw points left 50 boundary edges in 3 loops.
+const Case &noisy_pipe_case() {
+  static const Case c = [] {
+    Points p = pipe_samples(0.1, 1.0, 12000, 98);
+    add_noise(p, 0.2 * 0.033 / bbox_diagonal(p), 99);
+    return make_case("pipe, walls 3 spacings, noise 0.2 spacings", p);
+  }();
+  return c;
+}
+
+void test_noisy_pipe_closed(void **) { MOA_EXPECT(closed_failure(noisy_pipe_case(), 1, 0.999)); }
+
 void test_rough_sphere_closed(void **) { MOA_EXPECT(closed_failure(rough_sphere_case(), 0)); }
 void test_rough_genus3_closed(void **) { MOA_EXPECT(closed_failure(rough_genus3_case(), 3)); }
 
@@ -336,6 +385,8 @@ MOA_CONTRACT_TESTS(rough_genus3)
 MOA_CONTRACT_TESTS(rough_stack)
 MOA_CONTRACT_TESTS(rough_flat_ellipsoid)
 MOA_CONTRACT_TESTS(hollow_ball)
+MOA_CONTRACT_TESTS(noisy_hollow_ball)
+MOA_CONTRACT_TESTS(noisy_pipe)
 MOA_CONTRACT_TESTS(half_noisy_torus)
 
 int main(void) {
@@ -365,6 +416,11 @@ int main(void) {
       MOA_CONTRACT_ENTRIES(rough_stack),
       MOA_CONTRACT_ENTRIES(rough_flat_ellipsoid),
       MOA_CONTRACT_ENTRIES(hollow_ball),
+      cmocka_unit_test(test_noisy_hollow_ball_is_noisy_thin_walls),
+      cmocka_unit_test(test_noisy_hollow_ball_two_spheres),
+      MOA_CONTRACT_ENTRIES(noisy_hollow_ball),
+      cmocka_unit_test(test_noisy_pipe_closed),
+      MOA_CONTRACT_ENTRIES(noisy_pipe),
       cmocka_unit_test(test_noisy_in_part_is_noisy),
       cmocka_unit_test(test_half_noisy_torus_closed),
       MOA_CONTRACT_ENTRIES(half_noisy_torus),
