@@ -49,10 +49,16 @@ constexpr double kFarSheetJump = 3.0;
 // 0.05, 0.1 and 0.2 spacings; only the last is left open unsmoothed.
 constexpr double kNoisyWallRoughness = 0.15;
 // ... and their medians jump by this factor from one size to the next where the far sheet
-// comes in: 2.7-7.3 on noisy plates, pipes, cups and concentric spheres 3-4 spacings thick
-// (1.8-2.3 on some whose far sheet comes in gradually, which stay as they were). Clean samples
-// rough at 10 points (coarse or irregular ones) rise by at most 1.87 (elephant at 4k points).
+// comes in: 2.7-7.3 on noisy plates, pipes, cups and concentric spheres 3-4 spacings thick.
+// Clean samples rough at 10 points (coarse or irregular ones) rise by at most 1.87, from 10
+// points to 20 (elephant at 4k points). Past 20 points, where the far sheet of a wall 3.4-3.9
+// spacings thick may come in over two sizes (2.05-2.27 at the steeper), kNoisyWideWallJump is
+// enough: clean samples rise by at most 1.74 there (knot2 at 8k points, 160 to 320). From 10
+// to 20 a rise of 2.0-2.4 is a wall of about two spacings, which the near-sheet smoothing does
+// not help (the plane of a point's 16 nearest straddles it): a pipe 1.9 spacings thick went
+// from 131 boundary edges to 2,075.
 constexpr double kNoisyWallJump = 2.5;
+constexpr double kNoisyWideWallJump = 2.0;
 // Half-width of the band around the plane of a point's nearest kProbeNeighbors that its
 // smoothing neighbourhood keeps on a noisy thin wall, in units of the distance to the farthest
 // of them (about two spacings).
@@ -255,15 +261,15 @@ void noisy_in_part(const std::vector<double> &ratios, std::size_t samples, Noise
 }
 
 // Thin walls with noise on their sheets. Where the neighbourhoods reach the far sheet their
-// roughness jumps (kNoisyWallJump), and no larger neighbourhood is ever as flat as the noisy
-// finest ones: the drop test cannot see the noise, or sees it at a size spanning both sheets
-// and smooths them into one. When the medians jump and the finest scale is rough, the cloud
-// is noisy; it is smoothed over the largest neighbourhood short of the jump, on the near sheet
-// only (smoothed_points). Returns whether it decided so.
+// roughness jumps (kNoisyWallJump, kNoisyWideWallJump), and no larger neighbourhood is ever as
+// flat as the noisy finest ones: the drop test cannot see the noise, or sees it at a size
+// spanning both sheets and smooths them into one. When the medians jump and the finest scale
+// is rough, the cloud is noisy; it is smoothed over the largest neighbourhood short of the
+// jump, on the near sheet only (smoothed_points). Returns whether it decided so.
 bool noisy_thin_walls(const ScaleMedians &m, NoiseEstimate &est) {
   if (!(m[0] >= kNoisyWallRoughness)) return false;
   for (std::size_t c = 0; c + 1 < kScaleCount && m[c] >= 0 && m[c + 1] >= 0; ++c)
-    if (m[c + 1] > kNoisyWallJump * m[c]) {
+    if (m[c + 1] > (c == 0 ? kNoisyWallJump : kNoisyWideWallJump) * m[c]) {
       est.noisy = true;
       est.thin_walls = true;
       est.smoothing_k = kScales[c];

@@ -322,17 +322,37 @@ void test_hollow_ball_two_spheres(void **) {
 // sphere and look far rougher, so no neighbourhood looks flatter than the finest: unsmoothed,
 // the raw points left 200 boundary edges and joined the spheres. Smoothed over 20 neighbours
 // on the near sheet only, they are two closed spheres again.
+Points noisy_spheres(double outer_radius, std::size_t total, double noise, std::uint64_t seed) {
+  const std::size_t inner = std::size_t(double(total) / (1 + outer_radius * outer_radius));
+  Points p = sphere_random(inner, kInnerRadius, seed);
+  const Points outer = sphere_random(total - inner, outer_radius, seed + 1);
+  p.insert(p.end(), outer.begin(), outer.end());
+  add_noise(p, noise / bbox_diagonal(p), seed + 2);
+  return p;
+}
+
 const Case &noisy_hollow_ball_case() {
-  static const Case c = [] {
-    const std::size_t total = 12000;
-    const std::size_t inner = std::size_t(double(total) / (1 + kOuterRadius * kOuterRadius));
-    Points p = sphere_random(inner, kInnerRadius, 95);
-    const Points outer = sphere_random(total - inner, kOuterRadius, 96);
-    p.insert(p.end(), outer.begin(), outer.end());
-    add_noise(p, 0.2 * 0.05 / bbox_diagonal(p), 97);
-    return make_case("hollow ball, noise 0.2 spacings", p);
-  }();
+  static const Case c =
+      make_case("hollow ball, noise 0.2 spacings", noisy_spheres(kOuterRadius, 12000, 0.01, 95));
   return c;
+}
+
+// Spheres 0.18 apart (3.6 spacings): the far sheet comes in over two sizes, the medians rising
+// about 2.2 times from 20 points to 40 and 2 times from 40 to 80. Smoothed as plain noise
+// over 40 points, they were joined into one closed surface.
+const Case &noisy_wide_hollow_ball_case() {
+  static const Case c = make_case("hollow ball 3.6 spacings thick, noise 0.2 spacings",
+                                  noisy_spheres(1.18, 12000, 0.01, 95));
+  return c;
+}
+
+void test_noisy_wide_hollow_ball_two_spheres(void **) {
+  const Case &c = noisy_wide_hollow_ball_case();
+  const ContractReport &r = c.report;
+  if (!r.closed() || r.components != 2 || r.genus_sum != 0 ||
+      double(r.vertices_used) < 0.999 * double(c.points.size() / 3))
+    fail_msg("%s: not two closed spheres using 99.9 %% of the points\n%s", c.name.c_str(),
+             r.describe().c_str());
 }
 
 void test_noisy_hollow_ball_is_noisy_thin_walls(void **) {
@@ -387,6 +407,7 @@ MOA_CONTRACT_TESTS(rough_flat_ellipsoid)
 MOA_CONTRACT_TESTS(hollow_ball)
 MOA_CONTRACT_TESTS(noisy_hollow_ball)
 MOA_CONTRACT_TESTS(noisy_pipe)
+MOA_CONTRACT_TESTS(noisy_wide_hollow_ball)
 MOA_CONTRACT_TESTS(half_noisy_torus)
 
 int main(void) {
@@ -421,6 +442,8 @@ int main(void) {
       MOA_CONTRACT_ENTRIES(noisy_hollow_ball),
       cmocka_unit_test(test_noisy_pipe_closed),
       MOA_CONTRACT_ENTRIES(noisy_pipe),
+      cmocka_unit_test(test_noisy_wide_hollow_ball_two_spheres),
+      MOA_CONTRACT_ENTRIES(noisy_wide_hollow_ball),
       cmocka_unit_test(test_noisy_in_part_is_noisy),
       cmocka_unit_test(test_half_noisy_torus_closed),
       MOA_CONTRACT_ENTRIES(half_noisy_torus),
