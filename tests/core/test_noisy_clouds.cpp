@@ -307,21 +307,26 @@ void test_hollow_ball_is_not_noisy(void **) {
              e.large_scale, e.smoothing_k);
 }
 
-// Two closed spheres of genus 0, every point used, no face joining them.
-void test_hollow_ball_two_spheres(void **) {
-  const Case &c = hollow_ball_case();
+// Two closed spheres of genus 0, no face joining them, and at least the share min_used of the
+// points used.
+std::string two_spheres_failure(const Case &c, double min_used) {
   const ContractReport &r = c.report;
-  if (!r.closed() || r.components != 2 || r.genus_sum != 0 ||
-      r.vertices_used != c.points.size() / 3)
-    fail_msg("%s: not two closed spheres using every point\n%s", c.name.c_str(),
-             r.describe().c_str());
+  if (r.closed() && r.components == 2 && r.genus_sum == 0 &&
+      double(r.vertices_used) >= min_used * double(c.points.size() / 3))
+    return "";
+  return c.name + ": not two closed spheres using the points\n" + r.describe();
 }
 
-// The same two spheres, 12,000 points 0.05 apart (the gap is 3.2 spacings), with noise of a
+// Every point used.
+void test_hollow_ball_two_spheres(void **) {
+  MOA_EXPECT(two_spheres_failure(hollow_ball_case(), 1.0));
+}
+
+// The same two spheres, 12,000 points 0.05 apart (the gap is 3.1 spacings), with noise of a
 // fifth of a spacing. Each point's 10 and 20 nearest look noisy, its 40 nearest reach the far
 // sphere and look far rougher, so no neighbourhood looks flatter than the finest: unsmoothed,
-// the raw points left 200 boundary edges and joined the spheres. Smoothed over 20 neighbours
-// on the near sheet only, they are two closed spheres again.
+// the raw points left 48 boundary edges in one piece joining the spheres. Smoothed over 20
+// neighbours on the near sheet only, they are two closed spheres again.
 Points noisy_spheres(double outer_radius, std::size_t total, double noise, std::uint64_t seed) {
   const std::size_t inner = std::size_t(double(total) / (1 + outer_radius * outer_radius));
   Points p = sphere_random(inner, kInnerRadius, seed);
@@ -338,8 +343,8 @@ const Case &noisy_hollow_ball_case() {
 }
 
 // Spheres 0.18 apart (3.6 spacings): the far sheet comes in over two sizes, the medians rising
-// about 2.2 times from 20 points to 40 and 2 times from 40 to 80. Smoothed as plain noise
-// over 40 points, they were joined into one closed surface.
+// 2 to 2.5 times from 40 points to 80 and less before. Smoothed as plain noise over 40 points,
+// they were joined into one closed surface.
 const Case &noisy_wide_hollow_ball_case() {
   static const Case c = make_case("hollow ball 3.6 spacings thick, noise 0.2 spacings",
                                   noisy_spheres(1.18, 12000, 0.01, 95));
@@ -347,12 +352,7 @@ const Case &noisy_wide_hollow_ball_case() {
 }
 
 void test_noisy_wide_hollow_ball_two_spheres(void **) {
-  const Case &c = noisy_wide_hollow_ball_case();
-  const ContractReport &r = c.report;
-  if (!r.closed() || r.components != 2 || r.genus_sum != 0 ||
-      double(r.vertices_used) < 0.999 * double(c.points.size() / 3))
-    fail_msg("%s: not two closed spheres using 99.9 %% of the points\n%s", c.name.c_str(),
-             r.describe().c_str());
+  MOA_EXPECT(two_spheres_failure(noisy_wide_hollow_ball_case(), 0.999));
 }
 
 void test_noisy_hollow_ball_is_noisy_thin_walls(void **) {
@@ -363,12 +363,7 @@ void test_noisy_hollow_ball_is_noisy_thin_walls(void **) {
 }
 
 void test_noisy_hollow_ball_two_spheres(void **) {
-  const Case &c = noisy_hollow_ball_case();
-  const ContractReport &r = c.report;
-  if (!r.closed() || r.components != 2 || r.genus_sum != 0 ||
-      double(r.vertices_used) < 0.999 * double(c.points.size() / 3))
-    fail_msg("%s: not two closed spheres using 99.9 %% of the points\n%s", c.name.c_str(),
-             r.describe().c_str());
+  MOA_EXPECT(two_spheres_failure(noisy_hollow_ball_case(), 0.999));
 }
 
 // A pipe with walls 0.1 thick (outer radius 1, length 1; 12,000 points about 0.033 apart, so
