@@ -34,12 +34,15 @@ constexpr std::size_t kMaxLoop = 64;
 constexpr int kMaxCorners = 8;
 using Corners = std::array<uint32_t, kMaxCorners>;
 
-// The corners listed, the rest of the array kNone.
-Corners corners_of(std::initializer_list<uint32_t> list) {
+// The corners first..last (at most kMaxCorners), the rest of the array kNone.
+Corners corners_of(const uint32_t *first, const uint32_t *last) {
   Corners c;
   c.fill(kNone);
-  std::copy(list.begin(), list.end(), c.begin());
+  std::copy(first, last, c.begin());
   return c;
+}
+Corners corners_of(std::initializer_list<uint32_t> list) {
+  return corners_of(list.begin(), list.end());
 }
 
 // A waist: its corners in order (three to kMaxCorners).
@@ -301,9 +304,7 @@ class TunnelFinder {
       std::sort(sorted_.begin(), sorted_.end());
       if (std::adjacent_find(sorted_.begin(), sorted_.end()) != sorted_.end()) continue;
       const int n = int(cycle.size());
-      Corners c;
-      c.fill(kNone);
-      std::copy(cycle.begin(), cycle.end(), c.begin());
+      const Corners c = corners_of(cycle.data(), cycle.data() + n);
       if (!edges_full(g_.mesh, c, n)) continue;
       double spacing = 0;
       for (uint32_t v : cycle) spacing += g_.nb.spacing[v];
@@ -554,26 +555,26 @@ std::vector<uint32_t> vertices_near(const MeshState &mesh, std::size_t first_fac
   return at;
 }
 
+// Cuts each waist found that does not separate the surface; returns how many.
+std::size_t cut_waists(GrowthState &g, const std::vector<Cycle> &waists) {
+  HandleCutter cutter(g);
+  std::size_t cut = 0;
+  for (const Cycle &c : waists) cut += cutter.cut(c);
+  return cut;
+}
+
 }  // namespace
 
 std::size_t cut_thin_handles(GrowthState &g, std::size_t first_face) {
   // The cycles are sought only around the faces the loop module added, and one ring beyond:
   // a bridge becomes a handle when the holes beside it are closed.
-  const std::vector<Cycle> cycles = short_cycles(g.mesh, vertices_near(g.mesh, first_face));
-  HandleCutter cutter(g);
-  std::size_t cut = 0;
-  for (const Cycle &c : cycles) cut += cutter.cut(c);
-  return cut;
+  return cut_waists(g, short_cycles(g.mesh, vertices_near(g.mesh, first_face)));
 }
 
 std::size_t cut_narrow_tunnels(GrowthState &g, std::size_t first_face) {
   // Sought, like the thin handles, around the loop module's faces: those of the take-in too,
   // which can shorten a waist by putting a point on it.
-  HandleCutter cutter(g);
-  std::size_t cut = 0;
-  const std::vector<Cycle> tunnels = TunnelFinder(g).find(vertices_near(g.mesh, first_face));
-  for (const Cycle &c : tunnels) cut += cutter.cut(c);
-  return cut;
+  return cut_waists(g, TunnelFinder(g).find(vertices_near(g.mesh, first_face)));
 }
 
 }  // namespace moa
