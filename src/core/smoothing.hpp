@@ -40,8 +40,10 @@ NoiseEstimate estimate_noise(const KdIndex &index);
 // around it that holds about k points of a surface; except where whole regions moved several
 // times farther than the cloud's median point and they are thin parts (two sheets that one
 // quadric pulled together, not creases it rounded off): those points keep their place.
-// `near_sheet_only` (NoiseEstimate::thin_walls) fits each quadric to the points near the plane
-// of the point's nearest few only, so that a far sheet within the ball is left out.
+// Where the ball wraps round a part narrower than itself (a neck), the quadric is fitted to a
+// smaller, flatter ball of the point's nearest. `near_sheet_only` (NoiseEstimate::thin_walls)
+// fits each quadric to the points near the plane of the point's nearest few only, so that a
+// far sheet within the ball is left out.
 // Parallel over points; independent of the thread count.
 std::vector<Vec3> smoothed_points(const KdIndex &index, unsigned k, bool near_sheet_only,
                                   const std::function<void(double)> &tick);

@@ -272,6 +272,41 @@ Points pipe_samples(double thickness, double length, std::size_t n, std::uint64_
   return sample_mesh(v, t, n, seed);
 }
 
+Points dumbbell_samples(double neck, std::size_t n, std::uint64_t seed) {
+  constexpr double kBall = 0.6, kCentre = 1.0, kBlend = 0.05;
+  // The radius of the surface of revolution at x: the larger of ball and neck, blended.
+  auto radius = [&](double x) {
+    const double d = std::fabs(x) - kCentre;
+    const double ball = std::sqrt(std::max(0.0, kBall * kBall - d * d));
+    if (std::fabs(x) > kCentre) return ball;
+    const double h = std::clamp(0.5 + 0.5 * (ball - neck) / kBlend, 0.0, 1.0);
+    return neck + (ball - neck) * h + kBlend * h * (1 - h);
+  };
+  // Rings along x, closer together towards the poles, where the profile turns steeply.
+  const std::uint32_t rings = 600, m = 96;
+  std::vector<double> v;
+  const double end = kCentre + kBall;
+  for (std::uint32_t j = 1; j < rings; ++j) {
+    const double x = -end * std::cos(k_pi * double(j) / double(rings)), r = radius(x);
+    for (std::uint32_t i = 0; i < m; ++i) {
+      const double a = 2 * k_pi * double(i) / double(m);
+      v.insert(v.end(), {x, r * std::cos(a), r * std::sin(a)});
+    }
+  }
+  const std::uint32_t first_pole = std::uint32_t(v.size() / 3), second_pole = first_pole + 1;
+  v.insert(v.end(), {-end, 0.0, 0.0, end, 0.0, 0.0});
+  std::vector<std::uint32_t> t;
+  auto at = [&](std::uint32_t j, std::uint32_t i) { return (j - 1) * m + i % m; };
+  for (std::uint32_t i = 0; i < m; ++i) {
+    t.insert(t.end(), {first_pole, at(1, i + 1), at(1, i)});
+    t.insert(t.end(), {second_pole, at(rings - 1, i), at(rings - 1, i + 1)});
+    for (std::uint32_t j = 1; j + 1 < rings; ++j)
+      t.insert(t.end(), {at(j, i), at(j, i + 1), at(j + 1, i + 1), at(j, i), at(j + 1, i + 1),
+                         at(j + 1, i)});
+  }
+  return sample_mesh(v, t, n, seed);
+}
+
 Points parallel_sheets(double side, double spacing, double gap, std::uint64_t seed) {
   Rng rng(seed);
   Points p = blue_noise_square(side, spacing, rng);
