@@ -99,7 +99,7 @@ constexpr unsigned kProbeNeighbors = 16;
 // One smoothing size serves the whole cloud, and at a part narrower than its ball (a neck, a
 // handle, a tail) the ball wraps round the part: as thick as it is wide, it pulls the part's
 // sheets into one quadric (noisy dumbbells smoothed over 320 points kept 434-593 boundary
-// edges in 18-25 pieces round their necks). Where a point's whole ball is thicker than
+// edges in 17-28 pieces round their necks). Where a point's whole ball is thicker than
 // kWrappedBall (thickness over width: 0.5-1.0 round such necks, 0.05-0.3 on a noisy sheet,
 // 0.5-0.6 along a noisy cube's edges, whose rounding does no harm), the quadric is fitted to a
 // smaller ball of its nearest, halving from the whole: the largest at most kUnwrappedShare as
