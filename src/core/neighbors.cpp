@@ -56,6 +56,13 @@ constexpr double kParallelSheet = 0.6;    // lowest over highest height off the 
 // 58 without).
 constexpr double kThinWallShare = 0.05;
 constexpr std::size_t kThinWallSamples = 2000;
+// In a cloud of thin walls the far sheet takes up to half of a point's list, and a list of the
+// parameter's length leaves too few points of the near sheet for the third vertices and the
+// spheres of Algorithm 1 (concentric spheres 1.8-2.2 spacings apart, 20k points: 955-1,107
+// boundary edges with genus 35-40 at 1.8, and joined into one surface at 2.0-2.2). There the
+// lists are kThinWallListFactor times as long: 37-187 boundary edges at 1.8, two closed
+// spheres at 2.0-2.2 (1.5 times: 235-443 and closed; 2.5 and 3 times about the same as 2).
+constexpr unsigned kThinWallListFactor = 2;
 
 // Point i's plane, when its list is distorted by a far sheet: the normal of its nearest.
 bool near_sheet_normal(const std::vector<Vec3> &p, uint32_t i, const uint32_t *list, unsigned k,
@@ -154,6 +161,11 @@ Neighborhood compute_neighbors(const KdIndex &index, unsigned k,
   if (double(lined) < kLinedShare * double(n)) {
     // Only here: in a cloud sampled along lines a point's nearest lie on a line, not a plane.
     nb.thin_walls = has_thin_walls(index.points(), nb);
+    const unsigned longer = unsigned(std::min<std::size_t>(kThinWallListFactor * nb.k, n - 1));
+    if (nb.thin_walls && longer > nb.k) {
+      nb.k = longer;
+      knn_pass(index, nb, across_rank, across_gap, [&](double) { tick(1.0); });
+    }
     return nb;
   }
   nb.lined = true;

@@ -22,6 +22,7 @@ inline constexpr uint8_t kInTheVolume = 2;
 
 struct Neighborhood {
   unsigned k = 0;                 // the parameter's, or more in a cloud sampled along lines
+                                  // or of thin walls
   std::vector<uint32_t> knn;      // k per point, nearest first, the point itself excluded
   std::vector<float> spacing;     // mean distance to the nearest few neighbours (work units); in
                                   // a cloud sampled along lines, at least most of the gap to the

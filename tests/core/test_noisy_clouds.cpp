@@ -129,12 +129,16 @@ void test_clean_clouds_are_not_noisy(void **) {
   }
 }
 
-// The far-sheet rule for local planes (neighbors.cpp) is for clouds of thin walls only.
+// The far-sheet rule for local planes (neighbors.cpp) is for clouds of thin walls only, and
+// only theirs get lists twice the parameter's length.
 void test_thin_walls_seen_only_on_thin_walls(void **) {
   auto thin_walls = [](const Points &p) {
     moa::PointSet points = moa::prepare_points(p.data(), p.size() / 3);
     moa::KdIndex index(points.work);
-    return moa::compute_neighbors(index, 20, [](double) {}).thin_walls;
+    const moa::Neighborhood nb = moa::compute_neighbors(index, 20, [](double) {});
+    if (nb.k != (nb.thin_walls ? 40u : 20u))
+      fail_msg("lists of %u neighbours with thin walls %d", nb.k, int(nb.thin_walls));
+    return nb.thin_walls;
   };
   assert_true(thin_walls(plate_samples(1.0, 0.022, 20000, 22)));
   assert_true(thin_walls(pipe_samples(0.07, 1.0, 12000, 23)));
@@ -328,7 +332,8 @@ void test_hollow_ball_two_spheres(void **) {
 // sphere and look far rougher, so no neighbourhood looks flatter than the finest: unsmoothed,
 // the raw points left 48 boundary edges in one piece joining the spheres. Smoothed over 20
 // neighbours on the near sheet only, they are two closed spheres again.
-Points noisy_spheres(double outer_radius, std::size_t total, double noise, std::uint64_t seed) {
+Points concentric_spheres(double outer_radius, std::size_t total, double noise,
+                          std::uint64_t seed) {
   const std::size_t inner = std::size_t(double(total) / (1 + outer_radius * outer_radius));
   Points p = sphere_random(inner, kInnerRadius, seed);
   const Points outer = sphere_random(total - inner, outer_radius, seed + 1);
@@ -338,8 +343,8 @@ Points noisy_spheres(double outer_radius, std::size_t total, double noise, std::
 }
 
 const Case &noisy_hollow_ball_case() {
-  static const Case c =
-      make_case("hollow ball, noise 0.2 spacings", noisy_spheres(kOuterRadius, 12000, 0.01, 95));
+  static const Case c = make_case("hollow ball, noise 0.2 spacings",
+                                  concentric_spheres(kOuterRadius, 12000, 0.01, 95));
   return c;
 }
 
@@ -348,7 +353,7 @@ const Case &noisy_hollow_ball_case() {
 // they were joined into one closed surface.
 const Case &noisy_wide_hollow_ball_case() {
   static const Case c = make_case("hollow ball 3.6 spacings thick, noise 0.2 spacings",
-                                  noisy_spheres(1.18, 12000, 0.01, 95));
+                                  concentric_spheres(1.18, 12000, 0.01, 95));
   return c;
 }
 
@@ -365,6 +370,20 @@ void test_noisy_hollow_ball_is_noisy_thin_walls(void **) {
 
 void test_noisy_hollow_ball_two_spheres(void **) {
   MOA_EXPECT(two_spheres_failure(noisy_hollow_ball_case(), 0.999));
+}
+
+// Clean spheres 0.073 apart, 20,000 points 0.037 apart (the gap is 2 spacings): the far sphere
+// fills up to half of a point's 20 nearest, and too few are left on its own for Algorithm 1
+// (165 boundary edges, genus 9, the spheres joined). A cloud of thin walls gets lists twice
+// as long (neighbors.cpp), and these are two closed spheres.
+const Case &thin_hollow_ball_case() {
+  static const Case c =
+      make_case("hollow ball 2 spacings thick", concentric_spheres(1.073, 20000, 0.0, 95));
+  return c;
+}
+
+void test_thin_hollow_ball_two_spheres(void **) {
+  MOA_EXPECT(two_spheres_failure(thin_hollow_ball_case(), 1.0));
 }
 
 // A pipe with walls 0.1 thick (outer radius 1, length 1; 12,000 points about 0.033 apart, so
@@ -446,6 +465,7 @@ MOA_CONTRACT_TESTS(noisy_pipe)
 MOA_CONTRACT_TESTS(noisy_wide_hollow_ball)
 MOA_CONTRACT_TESTS(half_noisy_torus)
 MOA_CONTRACT_TESTS(noisy_dumbbell)
+MOA_CONTRACT_TESTS(thin_hollow_ball)
 
 int main(void) {
   const struct CMUnitTest tests[] = {
@@ -487,6 +507,8 @@ int main(void) {
       cmocka_unit_test(test_noisy_dumbbell_closed),
       cmocka_unit_test(test_smoothing_keeps_a_narrow_neck),
       MOA_CONTRACT_ENTRIES(noisy_dumbbell),
+      cmocka_unit_test(test_thin_hollow_ball_two_spheres),
+      MOA_CONTRACT_ENTRIES(thin_hollow_ball),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
