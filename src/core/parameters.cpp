@@ -24,7 +24,8 @@ const ParamRow kRows[] = {
     {"neighbors",
      "k of the k-nearest-neighbour graph that supplies the candidate points; in a cloud "
      "sampled along lines (a CT contour stack) whose lists reach too few points of the next "
-     "lines, up to five times the rank of the first such point (at most 96)",
+     "lines, up to five times the rank of the first such point (at most 96); in a cloud of "
+     "thin walls (a far sheet within the lists), twice as many",
      8, 64, true, &Params::neighbors},
     {"sphere_radius",
      "radius R of the candidate sphere around a target segment's midpoint, "
