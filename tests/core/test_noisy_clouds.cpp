@@ -386,6 +386,21 @@ void test_thin_hollow_ball_two_spheres(void **) {
   MOA_EXPECT(two_spheres_failure(thin_hollow_ball_case(), 1.0));
 }
 
+// Spheres 0.093 apart (2.5 spacings): the far sphere comes in at 40 points (medians 0.023,
+// 0.033, 0.79 at 10, 20, 40), and enough points whose 20 nearest reach it looked noisy on
+// their own: smoothed as noise in part, the two became one closed surface zigzagging between
+// them.
+const Case &hollow_ball_far_sheet_at_40_case() {
+  static const Case c =
+      make_case("hollow ball 2.5 spacings thick", concentric_spheres(1.093, 20000, 0.0, 96));
+  return c;
+}
+
+void test_hollow_ball_far_sheet_at_40_two_spheres(void **) {
+  assert_int_equal(hollow_ball_far_sheet_at_40_case().run.stats.smoothing_passes, 0);
+  MOA_EXPECT(two_spheres_failure(hollow_ball_far_sheet_at_40_case(), 1.0));
+}
+
 // A pipe with walls 0.1 thick (outer radius 1, length 1; 12,000 points about 0.033 apart, so
 // the wall is about 3 spacings), noise of a fifth of a spacing: closed, genus 1. Unsmoothed,
 // the raw points left 50 boundary edges in 3 loops.
@@ -509,6 +524,7 @@ int main(void) {
       MOA_CONTRACT_ENTRIES(noisy_dumbbell),
       cmocka_unit_test(test_thin_hollow_ball_two_spheres),
       MOA_CONTRACT_ENTRIES(thin_hollow_ball),
+      cmocka_unit_test(test_hollow_ball_far_sheet_at_40_two_spheres),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
