@@ -293,15 +293,20 @@ void test_stray_points_left_out(void **) {
 // of its faces joining the spheres). Clean, they are two closed spheres.
 constexpr double kInnerRadius = 1.0, kOuterRadius = 1.157;
 
+// Concentric random spheres of radii kInnerRadius and outer_radius, each as dense as the
+// other, `total` points in all, with Gaussian noise of standard deviation `noise` (none at 0).
+Points concentric_spheres(double outer_radius, std::size_t total, double noise,
+                          std::uint64_t seed) {
+  const std::size_t inner = std::size_t(double(total) / (1 + outer_radius * outer_radius));
+  Points p = sphere_random(inner, kInnerRadius, seed);
+  const Points outer = sphere_random(total - inner, outer_radius, seed + 1);
+  p.insert(p.end(), outer.begin(), outer.end());
+  add_noise(p, noise / bbox_diagonal(p), seed + 2);
+  return p;
+}
+
 const Case &hollow_ball_case() {
-  static const Case c = [] {
-    const std::size_t total = 6000;
-    const std::size_t inner = std::size_t(double(total) / (1 + kOuterRadius * kOuterRadius));
-    Points p = sphere_random(inner, kInnerRadius, 93);
-    const Points outer = sphere_random(total - inner, kOuterRadius, 94);
-    p.insert(p.end(), outer.begin(), outer.end());
-    return make_case("hollow ball", p);
-  }();
+  static const Case c = make_case("hollow ball", concentric_spheres(kOuterRadius, 6000, 0.0, 93));
   return c;
 }
 
@@ -332,16 +337,6 @@ void test_hollow_ball_two_spheres(void **) {
 // sphere and look far rougher, so no neighbourhood looks flatter than the finest: unsmoothed,
 // the raw points left 48 boundary edges in one piece joining the spheres. Smoothed over 20
 // neighbours on the near sheet only, they are two closed spheres again.
-Points concentric_spheres(double outer_radius, std::size_t total, double noise,
-                          std::uint64_t seed) {
-  const std::size_t inner = std::size_t(double(total) / (1 + outer_radius * outer_radius));
-  Points p = sphere_random(inner, kInnerRadius, seed);
-  const Points outer = sphere_random(total - inner, outer_radius, seed + 1);
-  p.insert(p.end(), outer.begin(), outer.end());
-  add_noise(p, noise / bbox_diagonal(p), seed + 2);
-  return p;
-}
-
 const Case &noisy_hollow_ball_case() {
   static const Case c = make_case("hollow ball, noise 0.2 spacings",
                                   concentric_spheres(kOuterRadius, 12000, 0.01, 95));
