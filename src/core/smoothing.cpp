@@ -122,10 +122,10 @@ constexpr double kMaxWrappedShare = 0.25;
 constexpr unsigned kMinWrappingBall = 80;
 
 // How many of `others`, nearest first once this returns, the quadric of point `self` is
-// fitted to when its whole ball, of thickness over width `ratio`, wraps round a part; 0 when
-// no smaller ball is flat enough.
+// fitted to when its whole ball, of thickness over width `ratio`, wraps round a part, with
+// their frame in `frame`; 0 when no smaller ball is flat enough.
 std::size_t unwrapped_size(const std::vector<Vec3> &p, uint32_t self, double ratio,
-                           std::vector<uint32_t> &others) {
+                           std::vector<uint32_t> &others, PcaFrame &frame) {
   const std::size_t all = others.size();
   if (all < 2 * kProbeNeighbors) return 0;
   const Vec3 &at = p[self];
@@ -136,11 +136,16 @@ std::size_t unwrapped_size(const std::vector<Vec3> &p, uint32_t self, double rat
   std::size_t flattest = 0;
   double flattest_ratio = kFlatterShare * ratio;
   for (std::size_t size = all / 2; size >= kProbeNeighbors; size /= 2) {
-    const double r = flatness_ratio(pca_frame(p, self, others.data(), unsigned(size)));
-    if (r <= kUnwrappedShare * ratio) return size;
+    const PcaFrame f = pca_frame(p, self, others.data(), unsigned(size));
+    const double r = flatness_ratio(f);
+    if (r <= kUnwrappedShare * ratio) {
+      frame = f;
+      return size;
+    }
     if (r < flattest_ratio) {
       flattest = size;
       flattest_ratio = r;
+      frame = f;
     }
   }
   return flattest;
@@ -454,12 +459,11 @@ std::vector<Vec3> smoothed_points(const KdIndex &index, unsigned k, bool near_sh
             if (near_sheet_only || k < kMinWrappingBall || !(ratio > kWrappedBall)) continue;
             // Past the share, nothing will be unwrapped: the work is saved.
             if (double(++wrapped) > kMaxWrappedShare * double(n)) continue;
-            if (const std::size_t size = unwrapped_size(work, uint32_t(i), ratio, others)) {
-              const unsigned fitted = unsigned(size);
-              const PcaFrame part = pca_frame(work, uint32_t(i), others.data(), fitted);
-              unwrapped.push_back(
-                  {uint32_t(i), project_onto_quadric(work, uint32_t(i), others.data(), fitted,
-                                                     part)});
+            PcaFrame part;
+            if (const std::size_t size = unwrapped_size(work, uint32_t(i), ratio, others, part)) {
+              const Vec3 moved =
+                  project_onto_quadric(work, uint32_t(i), others.data(), unsigned(size), part);
+              unwrapped.push_back({uint32_t(i), moved});
             }
           }
         });
