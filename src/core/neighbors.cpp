@@ -6,6 +6,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "core/kd_tree.hpp"
@@ -48,6 +49,9 @@ constexpr double kNotALine = 0.1;         // middle spread over the largest, at 
 constexpr double kSameNormalCos2 = 0.75;  // cos^2 30
 constexpr double kOffPlaneSin2 = 0.25;    // sin^2 30: farther off the plane is on the far sheet
 constexpr double kParallelSheet = 0.6;    // lowest over highest height off the plane, at least
+constexpr unsigned kMinFarSheet = 2;      // points off the plane that make a far sheet, at least
+constexpr unsigned kMinNearSheet = 2;     // and neighbours left on the point's own sheet
+constexpr unsigned kMaxListLength = 256;  // longest list refitted as two sheets
 // The nearest neighbours' plane serves only in a cloud of thin walls, where at least this share
 // of the points see a far sheet so (8-26 % on plates, pipes and bowls two to three spacings
 // thick). On other clouds 0-2 % do, at a thin flap or where a coarse sample's neighbours happen
@@ -64,6 +68,30 @@ constexpr std::size_t kThinWallSamples = 2000;
 // spheres at 2.0-2.2 (1.5 times: 235-443 and closed; 2.5 and 3 times about the same as 2).
 constexpr unsigned kThinWallListFactor = 2;
 
+// Whether neighbour offset d, at height h off a point's plane, is off the plane (over 30
+// degrees up): on the far sheet of a thin wall, or past a crease.
+bool off_the_plane(const Vec3 &d, double h) { return h * h > kOffPlaneSin2 * norm2(d); }
+
+// Whether the neighbours off the plane through point i with normal n lie on one side of it at
+// about one height: a second sheet parallel to the point's own.
+bool far_sheet_parallel(const std::vector<Vec3> &p, uint32_t i, const uint32_t *list, unsigned k,
+                        const Vec3 &n) {
+  double low = 0, high = 0;
+  int side = 0;
+  unsigned off = 0;
+  for (unsigned j = 0; j < k; ++j) {
+    const Vec3 d = p[list[j]] - p[i];
+    const double h = dot(d, n);
+    if (!off_the_plane(d, h)) continue;
+    if (side != 0 && (h > 0 ? 1 : -1) != side) return false;
+    side = h > 0 ? 1 : -1;
+    low = off == 0 ? std::fabs(h) : std::min(low, std::fabs(h));
+    high = std::max(high, std::fabs(h));
+    ++off;
+  }
+  return off >= kMinFarSheet && low >= kParallelSheet * high;
+}
+
 // Point i's plane, when its list is distorted by a far sheet: the normal of its nearest.
 bool near_sheet_normal(const std::vector<Vec3> &p, uint32_t i, const uint32_t *list, unsigned k,
                        const PcaFrame &all, Vec3 &normal) {
@@ -74,20 +102,35 @@ bool near_sheet_normal(const std::vector<Vec3> &p, uint32_t i, const uint32_t *l
   if (!(nearest.spread[0] < kCleanPlane * nearest.spread[1]) ||
       !(nearest.spread[1] > kNotALine * nearest.spread[2]) || agree * agree > kSameNormalCos2)
     return false;
-  double low = 0, high = 0;
-  int side = 0, off = 0;
-  for (unsigned j = 0; j < k; ++j) {
-    const Vec3 d = p[list[j]] - p[i];
-    const double h = dot(d, n);
-    if (h * h <= kOffPlaneSin2 * norm2(d)) continue;
-    if (side != 0 && (h > 0 ? 1 : -1) != side) return false;
-    side = h > 0 ? 1 : -1;
-    low = off == 0 ? std::fabs(h) : std::min(low, std::fabs(h));
-    high = std::max(high, std::fabs(h));
-    ++off;
-  }
-  if (off < 2 || low < kParallelSheet * high) return false;
+  if (!far_sheet_parallel(p, i, list, k, n)) return false;
   normal = n;
+  return true;
+}
+
+// Point i's plane, when its list holds both sheets of a thin wall in a way that tilts the
+// list's plane (the far sheet's share off to one side), refitted from the list's normal n as
+// two parallel sheets: the neighbours off the plane through i make the far sheet. Two rounds,
+// each sorting the neighbours by the plane of the round before. False when the far sheet is
+// too small or lies on both sides (a crease or a curved surface, not a wall).
+bool two_sheet_normal(const std::vector<Vec3> &p, uint32_t i, const uint32_t *list, unsigned k,
+                      Vec3 &n) {
+  std::array<bool, kMaxListLength> far;
+  if (k > far.size()) return false;
+  for (int round = 0; round < 2; ++round) {
+    int side = 0;
+    unsigned far_count = 0;
+    for (unsigned j = 0; j < k; ++j) {
+      const Vec3 d = p[list[j]] - p[i];
+      const double h = dot(d, n);
+      far[j] = off_the_plane(d, h);
+      if (!far[j]) continue;
+      if (side != 0 && (h > 0 ? 1 : -1) != side) return false;
+      side = h > 0 ? 1 : -1;
+      ++far_count;
+    }
+    if (far_count < kMinFarSheet || k - far_count < kMinNearSheet) return false;
+    n = pca_frame_two_sheets(p, i, list, k, far.data()).axis[0];
+  }
   return true;
 }
 
@@ -219,12 +262,21 @@ double median_spacing(const Neighborhood &nb) {
   return std::max(1e-9, double(s[s.size() / 2]));
 }
 
-Vec3 plane_normal(const PointSet &points, const Neighborhood &nb, uint32_t i) {
-  const PcaFrame all = pca_frame(points.work, i, nb.of(i), nb.k);
+LocalPlane local_plane(const PointSet &points, const Neighborhood &nb, uint32_t i) {
+  const std::vector<Vec3> &p = points.work;
+  const PcaFrame all = pca_frame(p, i, nb.of(i), nb.k);
   Vec3 normal;
-  if (nb.thin_walls && near_sheet_normal(points.work, i, nb.of(i), nb.k, all, normal))
-    return normal;
-  return all.axis[0];
+  if (!nb.thin_walls) return {all.axis[0], false};
+  if (near_sheet_normal(p, i, nb.of(i), nb.k, all, normal)) return {normal, true};
+  normal = all.axis[0];
+  if (two_sheet_normal(p, i, nb.of(i), nb.k, normal) &&
+      far_sheet_parallel(p, i, nb.of(i), nb.k, normal))
+    return {normal, true};
+  return {all.axis[0], false};
+}
+
+Vec3 plane_normal(const PointSet &points, const Neighborhood &nb, uint32_t i) {
+  return local_plane(points, nb, i).normal;
 }
 
 }  // namespace moa

@@ -28,7 +28,7 @@ struct Neighborhood {
                                   // a cloud sampled along lines, at least most of the gap to the
                                   // nearest neighbour off the point's line
   bool thin_walls = false;        // the cloud's walls are two or three spacings thick: local
-                                  // planes look past the far sheet (plane_normal)
+                                  // planes look past the far sheet (local_plane)
   bool lined = false;             // the cloud is sampled along lines (kLinedShare)
   std::vector<uint8_t> isolated;  // per point, kNearSurface or kInTheVolume for a stray point
                                   // (isolated_points.hpp), else 0; empty when the cloud has none
@@ -70,9 +70,19 @@ bool on_a_line(double spacing, double across_gap);
 // The median of the points' spacings (work units), never zero.
 double median_spacing(const Neighborhood &nb);
 
-// Unit normal of the least-squares plane through point i and its k neighbours, unoriented; in
-// a cloud of thin walls, through its nearest few when the rest lie on the wall's far sheet.
+// The plane fitted at a point: the unit normal, unoriented, and whether the point lies on one
+// sheet of a thin wall whose far sheet, parallel to it, is in the point's list.
+struct LocalPlane {
+  Vec3 normal;
+  bool in_thin_wall = false;
+};
+
+// The least-squares plane through point i and its k neighbours. In a cloud of thin walls, where
+// the list holds a far sheet parallel to the point's own: the plane of its nearest few when the
+// rest lie on that sheet, else that of the two sheets (each scattered about its own centre).
 // Computed when asked (the judgment caches it) rather than stored: 24 bytes per point.
+LocalPlane local_plane(const PointSet &points, const Neighborhood &nb, uint32_t i);
+// Its normal alone.
 Vec3 plane_normal(const PointSet &points, const Neighborhood &nb, uint32_t i);
 
 }  // namespace moa

@@ -51,7 +51,8 @@ const ParamRow kRows[] = {
      0, 180, false, &Params::vertex_open_angle},
     {"max_normal_deviation",
      "degrees; largest angle between a triangle's normal and the local "
-     "plane fitted at each of its vertices",
+     "plane fitted at each of its vertices; at most 40 where every vertex lies "
+     "in a thin wall (the far sheet, parallel, in its neighbour list)",
      1, 90, false, &Params::max_normal_deviation},
     {"hole_size",
      "widest hole the loop module closes, in units of the local point spacing; a loop's "

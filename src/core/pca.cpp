@@ -6,28 +6,58 @@
 
 namespace moa {
 
-PcaFrame pca_frame(const std::vector<Vec3> &p, uint32_t self, const uint32_t *nb, unsigned k) {
-  auto vec = [&](uint32_t i) { return Eigen::Vector3d(p[i].x, p[i].y, p[i].z); };
-  Eigen::Vector3d mean = vec(self);
-  for (unsigned j = 0; j < k; ++j) mean += vec(nb[j]);
-  mean /= double(k + 1);
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  auto add = [&](uint32_t i) {
-    Eigen::Vector3d d = vec(i) - mean;
-    cov += d * d.transpose();
-  };
-  add(self);
-  for (unsigned j = 0; j < k; ++j) add(nb[j]);
+namespace {
+
+Eigen::Vector3d vec(const Vec3 &v) { return Eigen::Vector3d(v.x, v.y, v.z); }
+
+// The axes of a scatter matrix, smallest spread first, about the given centre.
+PcaFrame frame_of(const Eigen::Matrix3d &cov, const Eigen::Vector3d &centre) {
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es;
   es.computeDirect(cov);
   PcaFrame f;
-  f.centroid = {mean.x(), mean.y(), mean.z()};
+  f.centroid = {centre.x(), centre.y(), centre.z()};
   for (int a = 0; a < 3; ++a) {
     Eigen::Vector3d e = es.eigenvectors().col(a);
     f.axis[a] = normalized(Vec3{e.x(), e.y(), e.z()});
     f.spread[a] = es.eigenvalues()(a);
   }
   return f;
+}
+
+}  // namespace
+
+PcaFrame pca_frame(const std::vector<Vec3> &p, uint32_t self, const uint32_t *nb, unsigned k) {
+  Eigen::Vector3d mean = vec(p[self]);
+  for (unsigned j = 0; j < k; ++j) mean += vec(p[nb[j]]);
+  mean /= double(k + 1);
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  auto add = [&](uint32_t i) {
+    Eigen::Vector3d d = vec(p[i]) - mean;
+    cov += d * d.transpose();
+  };
+  add(self);
+  for (unsigned j = 0; j < k; ++j) add(nb[j]);
+  return frame_of(cov, mean);
+}
+
+PcaFrame pca_frame_two_sheets(const std::vector<Vec3> &p, uint32_t self, const uint32_t *nb,
+                              unsigned k, const bool *far_sheet) {
+  Eigen::Vector3d mean[2] = {vec(p[self]), Eigen::Vector3d::Zero()};
+  double count[2] = {1, 0};
+  for (unsigned j = 0; j < k; ++j) {
+    mean[far_sheet[j]] += vec(p[nb[j]]);
+    ++count[far_sheet[j]];
+  }
+  for (int s = 0; s < 2; ++s)
+    if (count[s] > 0) mean[s] /= count[s];
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  auto add = [&](uint32_t i, int s) {
+    Eigen::Vector3d d = vec(p[i]) - mean[s];
+    cov += d * d.transpose();
+  };
+  add(self, 0);
+  for (unsigned j = 0; j < k; ++j) add(nb[j], far_sheet[j]);
+  return frame_of(cov, mean[0]);
 }
 
 double flatness_ratio(const PcaFrame &f) {

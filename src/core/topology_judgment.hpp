@@ -87,16 +87,16 @@ class TopologyJudge {
   MeshState &mesh_;
   CrossingIndex &crossings_;
   double flatness_a_, flatness_c_;
-  double cos_edge_fold_, cos_vertex_fold_, cos_vertex_open_, cos_normal_;
+  double cos_edge_fold_, cos_vertex_fold_, cos_vertex_open_, cos_normal_, cos_thin_wall_normal_;
   mutable std::vector<uint32_t> near_;
   // Local plane normals of recently judged corners, direct-mapped by point index: the growth
   // front stays within a few Morton blocks, so nearly every corner is found here.
-  struct CachedNormal {
+  struct CachedPlane {
     uint32_t point = kNone;
-    Vec3 normal;
+    LocalPlane plane;
   };
-  const Vec3 &normal_at(uint32_t v) const;
-  mutable std::vector<CachedNormal> normals_;
+  const LocalPlane &plane_at(uint32_t v) const;
+  mutable std::vector<CachedPlane> planes_;
 };
 
 }  // namespace moa
