@@ -45,8 +45,9 @@ PcaFrame pca_frame_two_sheets(const std::vector<Vec3> &p, uint32_t self, const u
   Eigen::Vector3d mean[2] = {vec(p[self]), Eigen::Vector3d::Zero()};
   double count[2] = {1, 0};
   for (unsigned j = 0; j < k; ++j) {
-    mean[far_sheet[j]] += vec(p[nb[j]]);
-    ++count[far_sheet[j]];
+    const int sheet = far_sheet[j] ? 1 : 0;
+    mean[sheet] += vec(p[nb[j]]);
+    ++count[sheet];
   }
   for (int s = 0; s < 2; ++s)
     if (count[s] > 0) mean[s] /= count[s];
@@ -56,7 +57,7 @@ PcaFrame pca_frame_two_sheets(const std::vector<Vec3> &p, uint32_t self, const u
     cov += d * d.transpose();
   };
   add(self, 0);
-  for (unsigned j = 0; j < k; ++j) add(nb[j], far_sheet[j]);
+  for (unsigned j = 0; j < k; ++j) add(nb[j], far_sheet[j] ? 1 : 0);
   return frame_of(cov, mean[0]);
 }
 

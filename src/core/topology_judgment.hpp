@@ -89,7 +89,7 @@ class TopologyJudge {
   double flatness_a_, flatness_c_;
   double cos_edge_fold_, cos_vertex_fold_, cos_vertex_open_, cos_normal_, cos_thin_wall_normal_;
   mutable std::vector<uint32_t> near_;
-  // Local plane normals of recently judged corners, direct-mapped by point index: the growth
+  // Local planes of recently judged corners, direct-mapped by point index: the growth
   // front stays within a few Morton blocks, so nearly every corner is found here.
   struct CachedPlane {
     uint32_t point = kNone;
