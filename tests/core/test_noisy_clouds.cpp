@@ -475,6 +475,7 @@ void test_thin_wall_planes(void **) {
     ++near_crease;
     marked_there += box.planes[i].in_thin_wall;
   }
+  // Measured: 3 of 996 marked.
   print_message("thin-walled box: %zu of %zu points within half a spacing of a crease marked\n",
                 marked_there, near_crease);
   assert_true(near_crease > 500);
