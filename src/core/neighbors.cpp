@@ -68,28 +68,43 @@ constexpr std::size_t kThinWallSamples = 2000;
 // spheres at 2.0-2.2 (1.5 times: 235-443 and closed; 2.5 and 3 times about the same as 2).
 constexpr unsigned kThinWallListFactor = 2;
 
-// Whether neighbour offset d, at height h off a point's plane, is off the plane (over 30
-// degrees up): on the far sheet of a thin wall, or past a crease.
-bool off_the_plane(const Vec3 &d, double h) { return h * h > kOffPlaneSin2 * norm2(d); }
+// The neighbours of point i off the plane through it with normal n (over 30 degrees up): on
+// the far sheet of a thin wall, or past a crease. How many, whether all on one side of the
+// plane (counting stops at the first on the other), and their lowest and highest height;
+// far[j], when given, marks each of them.
+struct OffPlane {
+  unsigned count = 0;
+  bool one_side = true;
+  double low = 0, high = 0;
+};
+OffPlane off_plane_neighbours(const std::vector<Vec3> &p, uint32_t i, const uint32_t *list,
+                              unsigned k, const Vec3 &n, bool *far = nullptr) {
+  OffPlane off;
+  int side = 0;
+  for (unsigned j = 0; j < k; ++j) {
+    const Vec3 d = p[list[j]] - p[i];
+    const double h = dot(d, n);
+    const bool is_off = h * h > kOffPlaneSin2 * norm2(d);
+    if (far) far[j] = is_off;
+    if (!is_off) continue;
+    if (side != 0 && (h > 0 ? 1 : -1) != side) {
+      off.one_side = false;
+      return off;
+    }
+    side = h > 0 ? 1 : -1;
+    off.low = off.count == 0 ? std::fabs(h) : std::min(off.low, std::fabs(h));
+    off.high = std::max(off.high, std::fabs(h));
+    ++off.count;
+  }
+  return off;
+}
 
 // Whether the neighbours off the plane through point i with normal n lie on one side of it at
 // about one height: a second sheet parallel to the point's own.
 bool far_sheet_parallel(const std::vector<Vec3> &p, uint32_t i, const uint32_t *list, unsigned k,
                         const Vec3 &n) {
-  double low = 0, high = 0;
-  int side = 0;
-  unsigned off = 0;
-  for (unsigned j = 0; j < k; ++j) {
-    const Vec3 d = p[list[j]] - p[i];
-    const double h = dot(d, n);
-    if (!off_the_plane(d, h)) continue;
-    if (side != 0 && (h > 0 ? 1 : -1) != side) return false;
-    side = h > 0 ? 1 : -1;
-    low = off == 0 ? std::fabs(h) : std::min(low, std::fabs(h));
-    high = std::max(high, std::fabs(h));
-    ++off;
-  }
-  return off >= kMinFarSheet && low >= kParallelSheet * high;
+  const OffPlane off = off_plane_neighbours(p, i, list, k, n);
+  return off.one_side && off.count >= kMinFarSheet && off.low >= kParallelSheet * off.high;
 }
 
 // Point i's plane, when its list is distorted by a far sheet: the normal of its nearest.
@@ -117,18 +132,8 @@ bool two_sheet_normal(const std::vector<Vec3> &p, uint32_t i, const uint32_t *li
   std::array<bool, kMaxListLength> far;
   if (k > far.size()) return false;
   for (int round = 0; round < 2; ++round) {
-    int side = 0;
-    unsigned far_count = 0;
-    for (unsigned j = 0; j < k; ++j) {
-      const Vec3 d = p[list[j]] - p[i];
-      const double h = dot(d, n);
-      far[j] = off_the_plane(d, h);
-      if (!far[j]) continue;
-      if (side != 0 && (h > 0 ? 1 : -1) != side) return false;
-      side = h > 0 ? 1 : -1;
-      ++far_count;
-    }
-    if (far_count < kMinFarSheet || k - far_count < kMinNearSheet) return false;
+    const OffPlane off = off_plane_neighbours(p, i, list, k, n, far.data());
+    if (!off.one_side || off.count < kMinFarSheet || k - off.count < kMinNearSheet) return false;
     n = pca_frame_two_sheets(p, i, list, k, far.data()).axis[0];
   }
   return true;
