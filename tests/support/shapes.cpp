@@ -241,12 +241,34 @@ Points saddle(double spacing, std::uint64_t seed) {
   return thin_points(candidates, spacing);  // in 3-D, so steep parts are not under-sampled
 }
 
+namespace {
+
+// Appends the corners of the box [lo, hi] (corner i has x, y, z at the high end where bits 0,
+// 1, 2 of i are set) to v, and its twelve triangles, their corners offset by `first`, to t.
+void add_box(const double (&lo)[3], const double (&hi)[3], std::uint32_t first,
+             std::vector<double> &v, std::vector<std::uint32_t> &t) {
+  for (int i = 0; i < 8; ++i)
+    v.insert(v.end(), {(i & 1) ? hi[0] : lo[0], (i & 2) ? hi[1] : lo[1], (i & 4) ? hi[2] : lo[2]});
+  for (std::uint32_t c : {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4,
+                          2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5})
+    t.push_back(first + c);
+}
+
+}  // namespace
+
 Points plate_samples(double side, double thickness, std::size_t n, std::uint64_t seed) {
   std::vector<double> v;
-  for (int i = 0; i < 8; ++i)
-    v.insert(v.end(), {(i & 1) ? side : 0.0, (i & 2) ? side : 0.0, (i & 4) ? thickness : 0.0});
-  const std::vector<std::uint32_t> t = {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4,
-                                        2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
+  std::vector<std::uint32_t> t;
+  add_box({0, 0, 0}, {side, side, thickness}, 0, v, t);
+  return sample_mesh(v, t, n, seed);
+}
+
+Points hollow_box_samples(double half, double wall, std::size_t n, std::uint64_t seed) {
+  std::vector<double> v;
+  std::vector<std::uint32_t> t;
+  const double in = half - wall;
+  add_box({-half, -half, -half}, {half, half, half}, 0, v, t);
+  add_box({-in, -in, -in}, {in, in, in}, 8, v, t);
   return sample_mesh(v, t, n, seed);
 }
 

@@ -57,6 +57,9 @@ Points parallel_sheets(double side, double spacing, double gap, std::uint64_t se
 // radius 1 (a 96-sided prism with a prism-shaped hole, closed at both ends by rings; genus 1).
 Points plate_samples(double side, double thickness, std::size_t n, std::uint64_t seed);
 Points pipe_samples(double thickness, double length, std::size_t n, std::uint64_t seed);
+// A cube 2 * half on a side, centred on the origin, with walls `wall` thick: its outer and inner
+// faces (not oriented: only the points are used).
+Points hollow_box_samples(double half, double wall, std::size_t n, std::uint64_t seed);
 // A dumbbell along x sampled uniformly (sample_mesh): balls of radius 0.6 centred at x = -1 and
 // x = 1, joined by a neck of radius `neck`, the joints rounded over about 0.05.
 Points dumbbell_samples(double neck, std::size_t n, std::uint64_t seed);
