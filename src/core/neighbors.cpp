@@ -28,10 +28,18 @@ constexpr double kAcrossShare = 0.8;
 // at this (0-based) rank or deeper in half of the lists, the lists are recomputed
 // kAcrossListFactor times that long, at most kMaxLinedNeighbors: a bunny stack of 60 slices
 // with 5 points per slice gap has it at rank 10, and closes with lists of 50 (with 20: 2,507
-// boundary edges in 61 pieces).
-constexpr unsigned kDeepAcrossRank = 8;
+// boundary edges in 61 pieces). With 3 points per gap it comes at rank 5-6: from 8 down to 5,
+// sphere stacks of 40-80 slices at 3 per gap went from 54-244 boundary edges to closed, and a
+// bunny cut by 60 oblique slices from 154 to closed.
+constexpr unsigned kDeepAcrossRank = 5;
 constexpr unsigned kAcrossListFactor = 5;
 constexpr std::size_t kMaxLinedNeighbors = 96;
+// Near an object's top and bottom the surface runs nearly along the slices, and the next line
+// can lie farther than a list reaches along the point's own line. Such a point's list gives its
+// last 1/kAcrossInList to the nearest points across, found among its nearest kDeepAcrossQuery
+// (a half: more boundary edges on the stacks tried; all of the list: more again).
+constexpr unsigned kAcrossInList = 4;
+constexpr std::size_t kDeepAcrossQuery = 384;
 static_assert(kMaxLinedNeighbors < 256, "a rank must fit the byte knn_pass keeps it in");
 
 // Thin walls (a plate, a pipe two or three spacings thick): the far sheet fills a quarter of
@@ -193,6 +201,41 @@ void knn_pass(const KdIndex &index, Neighborhood &nb, std::vector<uint8_t> &acro
   }
 }
 
+// The points of a lined cloud whose list holds no neighbour across: the last part of the list
+// goes to the nearest points across (kAcrossInList), and the spacing spans the gap to them.
+void reach_across(const KdIndex &index, Neighborhood &nb, const std::vector<float> &across_gap) {
+  const std::vector<Vec3> &p = index.points();
+  std::vector<uint32_t> short_of_across;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (across_gap[i] == 0) short_of_across.push_back(uint32_t(i));
+  const unsigned most = std::max(1u, nb.k / kAcrossInList);
+  const std::size_t want = std::min(kDeepAcrossQuery + 1, p.size());
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, short_of_across.size(), 64),
+      [&](const tbb::blocked_range<std::size_t> &r) {
+        std::vector<std::pair<uint32_t, double>> near;  // (point, squared distance), nearest first
+        std::vector<uint32_t> across;
+        for (std::size_t t = r.begin(); t != r.end(); ++t) {
+          const uint32_t i = short_of_across[t];
+          uint32_t *list = nb.knn.data() + std::size_t(i) * nb.k;
+          const Vec3 along = p[list[0]] - p[i];
+          index.nearest_many(p[i], want, near);
+          across.clear();
+          double gap2 = 0;
+          for (const auto &[j, d2] : near) {
+            if (j == i || !off_line(p[j] - p[i], along)) continue;
+            if (across.empty()) gap2 = d2;
+            across.push_back(j);
+            if (across.size() == most) break;
+          }
+          // All of them lie beyond the list: in place of its farthest, it stays nearest first.
+          std::copy(across.begin(), across.end(), list + (nb.k - across.size()));
+          if (!across.empty())
+            nb.spacing[i] = std::max(nb.spacing[i], float(kAcrossShare * std::sqrt(gap2)));
+        }
+      });
+}
+
 }  // namespace
 
 Neighborhood compute_neighbors(const KdIndex &index, unsigned k,
@@ -230,6 +273,7 @@ Neighborhood compute_neighbors(const KdIndex &index, unsigned k,
   }
   for (std::size_t i = 0; i < n; ++i)
     nb.spacing[i] = std::max(nb.spacing[i], float(kAcrossShare * across_gap[i]));
+  reach_across(index, nb, across_gap);
   return nb;
 }
 

@@ -1,7 +1,11 @@
 // Property tests on well-sampled closed surfaces: the contract (C1-C6), consistent stats, and a
 // closed result of the true genus that uses every point.
+#include "core/kd_tree.hpp"
+#include "core/neighbors.hpp"
+#include "core/point_set.hpp"
 #include "core_harness.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <set>
@@ -232,6 +236,16 @@ const Case &fine_contour_stack_case() {
   return c;
 }
 
+const Case &sphere_contour_stack_case() {
+  // A sphere cut by 60 planes, three points per plane gap: the first neighbour across a cut
+  // ranks about sixth, and with lists of 20 the cuts near the poles, which lie several gaps
+  // apart on the surface, were not joined (186 boundary edges in 9 pieces, genus 1) before such
+  // a cloud's lists were lengthened from that rank on (8 before) and the lists near the poles
+  // given points across.
+  static const Case c = make_case("sphere contour stack", sphere_contour_stack(60, 3, 1));
+  return c;
+}
+
 }  // namespace
 
 MOA_CONTRACT_TESTS(fibonacci_sphere)
@@ -254,6 +268,7 @@ MOA_CONTRACT_TESTS(density_gradient)
 MOA_CONTRACT_TESTS(survey_coordinates)
 MOA_CONTRACT_TESTS(contour_stack)
 MOA_CONTRACT_TESTS(fine_contour_stack)
+MOA_CONTRACT_TESTS(sphere_contour_stack)
 
 static void test_fibonacci_sphere_closed_genus0(void **) { MOA_EXPECT(closed_failure(fibonacci_sphere_case(), 0)); }
 static void test_random_sphere_closed_genus0(void **) { MOA_EXPECT(closed_failure(random_sphere_case(), 0)); }
@@ -312,6 +327,37 @@ static void test_contour_stack_closed_genus1(void **) { MOA_EXPECT(closed_failur
 static void test_fine_contour_stack_closed_genus1(void **) {
   MOA_EXPECT(closed_failure(fine_contour_stack_case(), 1));
 }
+static void test_sphere_contour_stack_closed_genus0(void **) {
+  MOA_EXPECT(closed_failure(sphere_contour_stack_case(), 0));
+}
+
+// Near the poles of a contour stack the next cut can lie farther than a list reaches along a
+// point's own cut: every list must still hold a point of another cut (neighbors.cpp), or the
+// spheres of the segments there hold nothing to join the cuts with.
+static void test_contour_lists_reach_across(void **) {
+  const std::size_t slices = 60;
+  const Points stack = sphere_contour_stack(slices, 2.5, 1);
+  moa::PointSet points = moa::prepare_points(stack.data(), stack.size() / 3);
+  moa::KdIndex index(points.work);
+  const moa::Neighborhood nb = moa::compute_neighbors(index, 20, [](double) {});
+  assert_true(nb.lined);
+  // The cuts by height along the axis, in the work frame (an affine image of the input).
+  const moa::Vec3 axis{1, 0.3, 0.2};
+  std::vector<double> height(points.work.size());
+  for (std::size_t i = 0; i < height.size(); ++i) height[i] = moa::dot(points.work[i], axis);
+  const auto [lo, hi] = std::minmax_element(height.begin(), height.end());
+  const double gap = (*hi - *lo) / double(slices - 1);
+  std::size_t without = 0;
+  for (uint32_t i = 0; i < height.size(); ++i) {
+    const uint32_t *list = nb.of(i);
+    bool across = false;
+    for (unsigned j = 0; j < nb.k && !across; ++j)
+      across = std::fabs(height[list[j]] - height[i]) > 0.5 * gap;
+    without += !across;
+  }
+  if (without > 0)
+    fail_msg("%zu of %zu lists hold no point of another cut", without, height.size());
+}
 
 int main(void) {
   const struct CMUnitTest tests[] = {
@@ -338,6 +384,9 @@ int main(void) {
       cmocka_unit_test(test_survey_coordinates_closed_genus1),
       MOA_CONTRACT_ENTRIES(contour_stack),    cmocka_unit_test(test_contour_stack_closed_genus1),
       MOA_CONTRACT_ENTRIES(fine_contour_stack), cmocka_unit_test(test_fine_contour_stack_closed_genus1),
+      MOA_CONTRACT_ENTRIES(sphere_contour_stack),
+      cmocka_unit_test(test_sphere_contour_stack_closed_genus0),
+      cmocka_unit_test(test_contour_lists_reach_across),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -455,6 +455,33 @@ Points torus_contour_stack(double per_gap) {
                        per_gap, 1);
 }
 
+Points sphere_contour_stack(std::size_t slices, double per_gap, std::uint64_t seed) {
+  Rng rng(seed);
+  const double pi = 3.14159265358979323846;
+  // The axis and two unit directions across it.
+  const double len = std::sqrt(1 + 0.09 + 0.04);
+  const double a[3] = {1 / len, 0.3 / len, 0.2 / len};
+  const double ulen = std::sqrt(a[1] * a[1] + a[0] * a[0]);
+  const double u[3] = {a[1] / ulen, -a[0] / ulen, 0};  // a x (0, 0, 1), normalised
+  const double v[3] = {a[1] * u[2] - a[2] * u[1], a[2] * u[0] - a[0] * u[2],
+                       a[0] * u[1] - a[1] * u[0]};  // a x u
+  const double gap = 2.0 / double(slices), step = gap / per_gap;
+  Points p;
+  for (std::size_t s = 0; s < slices; ++s) {
+    const double h = -1 + (double(s) + 0.5) * gap, r = std::sqrt(1 - h * h);
+    // Evenly along the circle from a random start, as a segmentation's contours come.
+    const std::size_t count = std::max<std::size_t>(3, std::size_t(std::lround(2 * pi * r / step)));
+    const double start = rng.uniform();
+    for (std::size_t c = 0; c < count; ++c) {
+      const double t = 2 * pi * (start + double(c)) / double(count);
+      const double cu = r * std::cos(t), sv = r * std::sin(t);
+      push(p, h * a[0] + cu * u[0] + sv * v[0], h * a[1] + cu * u[1] + sv * v[1],
+           h * a[2] + cu * u[2] + sv * v[2]);
+    }
+  }
+  return p;
+}
+
 Points thin_points(const Points &candidates, double min_distance) {
   // Hash grid with cells of min_distance: a conflicting point lies in one of the 27 cells around.
   auto cell = [&](double x) { return static_cast<std::int64_t>(std::floor(x / min_distance)); };

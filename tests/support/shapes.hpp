@@ -83,6 +83,10 @@ Points contour_stack(const std::vector<double> &vertices, const std::vector<std:
 // The torus_grid(120, 48, 1.0, 0.4) mesh as a contour stack: 30 planes across the axis
 // (1, 0.3, 0.2), `per_gap` points per plane gap, seed 1.
 Points torus_contour_stack(double per_gap);
+// The unit sphere as a contour stack: `slices` planes across the axis (1, 0.3, 0.2) at the
+// middles of even bands, each circle sampled evenly from a random start, `per_gap` points per
+// plane gap. Near the poles the circles lie several gaps apart on the surface.
+Points sphere_contour_stack(std::size_t slices, double per_gap, std::uint64_t seed);
 // Greedy blue-noise thinning: keeps candidates (in order) at least min_distance from all kept.
 Points thin_points(const Points &candidates, double min_distance);
 
