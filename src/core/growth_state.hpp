@@ -39,12 +39,13 @@ struct GrowthState {
   }
 
   // Adds the triangles in order if each passes the relaxed judgment (the loop module's patches
-  // and splits; see TopologyJudge::judge for layers_allowed), counting the verdicts; if one
-  // fails, takes back those added and returns false.
-  bool add_all_or_none(const std::vector<Tri> &tris, bool layers_allowed = false) {
+  // and splits; see TopologyJudge::judge for layers_allowed and flat_corners), counting the
+  // verdicts; if one fails, takes back those added and returns false.
+  bool add_all_or_none(const std::vector<Tri> &tris, bool layers_allowed = false,
+                       bool flat_corners = false) {
     std::vector<uint32_t> added;
     for (const Tri &t : tris) {
-      Verdict v = judge.judge(t, nullptr, 0, true, layers_allowed);
+      Verdict v = judge.judge(t, nullptr, 0, true, layers_allowed, flat_corners);
       TopologyJudge::count(v, stats);
       if (v != Verdict::Accept) break;
       added.push_back(add_face(t));

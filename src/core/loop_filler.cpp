@@ -13,10 +13,12 @@
 #include <unordered_map>
 #include <vector>
 
+#include "core/cut_cap.hpp"
 #include "core/disjoint_sets.hpp"
 #include "core/growth_state.hpp"
 #include "core/hole_patch.hpp"
 #include "core/neighbors.hpp"
+#include "core/pca.hpp"
 
 namespace moa {
 namespace {
@@ -30,6 +32,7 @@ struct Loop {
   double hole_width = 0;           // hole_size times the mean spacing of its vertices
   uint32_t piece = kNone;          // the component of the faces along it
   bool fillable = false;
+  bool flat_cut = false;           // too wide, but lying in one cut of a contour stack (capped)
 };
 
 struct HoleEdge {
@@ -82,6 +85,14 @@ constexpr double kSmallLoopShare = 0.5;
 constexpr double kSmallLoopWidths = 3.0;
 constexpr double kCreaseAngle = 25.0;
 constexpr double kCreaseReach = 2.0;
+// A loop lies in one cut of a lined cloud (in_one_cut) when its vertices stand off their plane
+// by at most this many spacings (root mean square; a strip between two cuts: half a gap, about
+// 0.6 spacings, as the spacing of a point on a line is about 0.8 gaps), and at least half of
+// them have a neighbour at least kCutBeside spacings off it (on the next cut).
+constexpr double kCutFlatness = 0.1;
+constexpr double kCutBeside = 0.5;
+// Longest loop capped so (the cost of clipping its ears grows with the square of its length).
+constexpr std::size_t kMaxCappedLoop = 8192;
 // Longest loop the last-resort patch triangulates (its cost grows with the cube of the length).
 constexpr std::size_t kMaxPatchedLoop = 96;
 // Rings of faces a hole may lose so that a wider hole can be patched, and the total number of
@@ -226,6 +237,19 @@ class LoopFiller {
     return strip;
   }
 
+  // Caps the loops that lie in one cut of a contour stack with the triangulation of their
+  // polygon in its plane (cut_cap.hpp), if every triangle of it passes the relaxed judgment.
+  void cap_flat_cuts() {
+    for (const Loop &loop : loops_) {
+      if (!loop.flat_cut || loop.vertices.size() > kMaxCappedLoop || !still_open(loop.vertices))
+        continue;
+      g_.poll();
+      const std::vector<Tri> tris = flat_cap(g_.points.work, loop.vertices);
+      if (!tris.empty() && g_.add_all_or_none(tris, false, true))
+        g_.stats.triangles_loops += tris.size();
+    }
+  }
+
   // The last resort: each hole still open is patched at once with the triangulation of its
   // loop that bends the surface least (hole_patch.hpp), if every triangle of it passes the
   // relaxed judgment. When the faces around the hole fold over it, they go and the wider hole
@@ -349,6 +373,7 @@ class LoopFiller {
       for (const Loop &loop : loops_) g_.stats.boundary_edges_before += loop.vertices.size();
     }
     classify_and_pool();
+    cap_flat_cuts();
     for (int pass = 0; pass < kPasses; ++pass) {
       bool relaxed = pass >= kStrictPasses;
       std::size_t added = fill_pass(relaxed);
@@ -803,6 +828,30 @@ class LoopFiller {
     return false;
   }
 
+  // Whether a loop of a cloud sampled along lines lies in the plane of one cut, with other cuts
+  // beside it: a face parallel to the slices, which gets no points but its rim (an object's
+  // flat top or bottom, or one cut off by the scan's field), is such a loop. A strip between
+  // two cuts spans the gap between them, and a flat open surface's border has no point off
+  // its plane.
+  bool in_one_cut(const std::vector<uint32_t> &loop, double spacing) const {
+    const auto &w = g_.points.work;
+    const std::size_t n = loop.size();
+    if (n < 3) return false;
+    const PcaFrame f = pca_frame(w, loop[0], loop.data() + 1, unsigned(n - 1));
+    const double thickness = std::sqrt(std::max(0.0, f.spread[0]) / double(n));
+    if (!(thickness <= kCutFlatness * spacing)) return false;
+    std::size_t beside = 0;
+    for (uint32_t v : loop) {
+      const uint32_t *nb = g_.nb.of(v);
+      for (unsigned j = 0; j < g_.nb.k; ++j)
+        if (std::fabs(dot(w[nb[j]] - w[v], f.axis[0])) > kCutBeside * spacing) {
+          ++beside;
+          break;
+        }
+    }
+    return 2 * beside >= n;
+  }
+
   // A loop is a hole, to be filled, when it is narrow (at most hole_size spacings wide, or its
   // widest waist is: a gap left between growing fronts, a strip torn along a sharp edge), or
   // when it is short next to the surface it bounds and not too wide (a hole torn at a sharp
@@ -839,6 +888,7 @@ class LoopFiller {
           widest_waist(loop.vertices) <= g_.params.hole_size * std::min(spacing, sparse_spacing) ||
           (double(n) <= kSmallLoopShare * std::sqrt(surface_vertices) &&
            width <= kSmallLoopWidths * hole_width && bends(loop.vertices));
+      loop.flat_cut = !loop.fillable && g_.nb.lined && in_one_cut(loop.vertices, spacing);
     }
     // Candidates of a loop: its own vertices, and the neighbours of its vertices that lie on
     // another loop (the outer loop around an island, Fig. 9 (2), whose lists the paper

@@ -118,8 +118,8 @@ bool TopologyJudge::is_sliver(const Tri &t) const {
   return norm(cross(b - a, c - a)) < kSliverHeight * longest2;
 }
 
-bool TopologyJudge::degenerate(const Tri &t, bool relaxed) const {
-  const double limit = relaxed ? kMaxCornerCosRelaxed : kMaxCornerCos;
+bool TopologyJudge::degenerate(const Tri &t, bool relaxed, bool flat_corners) const {
+  const double limit = flat_corners ? -1.0 : relaxed ? kMaxCornerCosRelaxed : kMaxCornerCos;
   const Vec3 &a = points_.work[t[0]], &b = points_.work[t[1]], &c = points_.work[t[2]];
   // A corner above the limit has a cosine below cos(limit).
   auto corner_cos = [](const Vec3 &p, const Vec3 &q, const Vec3 &r) {
@@ -354,8 +354,8 @@ double TopologyJudge::reach(const Tri &t) const {
 }
 
 Verdict TopologyJudge::judge(const Tri &t, const uint32_t *sphere, std::size_t count, bool relaxed,
-                             bool layers_allowed) {
-  if (degenerate(t, relaxed)) return Verdict::Degenerate;
+                             bool layers_allowed, bool flat_corners) {
+  if (degenerate(t, relaxed, relaxed && flat_corners)) return Verdict::Degenerate;
   switch (mesh_.check(t)) {
     case TopologyVerdict::Ok:
       break;

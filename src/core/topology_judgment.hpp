@@ -44,8 +44,11 @@ class TopologyJudge {
   // the test for faces lying close over t: for the cut of a flattened bridge (handle_cut.cpp),
   // and for the patches and take-ins still refused with it, which the faces across a sharp
   // crease can overlap in projection without crossing them (loop_filler.cpp, take_in.cpp).
+  // `flat_corners` lets a relaxed judgment pass corners up to just short of 180 degrees (only
+  // collinear corners are degenerate then): the caps of flat faces in contour stacks
+  // (cut_cap.hpp), whose rims run round many points in a plane.
   Verdict judge(const Tri &t, const uint32_t *sphere, std::size_t count, bool relaxed = false,
-                bool layers_allowed = false);
+                bool layers_allowed = false, bool flat_corners = false);
   // Records a verdict in the run statistics.
   static void count(Verdict v, moa_stats &stats);
   // How far (work units) around t's bounding box judge() looks at faces: the crossing test's
@@ -53,7 +56,7 @@ class TopologyJudge {
   double reach(const Tri &t) const;
 
  private:
-  bool degenerate(const Tri &t, bool relaxed) const;
+  bool degenerate(const Tri &t, bool relaxed, bool flat_corners = false) const;
   bool is_sliver(const Tri &t) const;
   bool normal_deviates(const Tri &t) const;
   // The face on each edge t[i] t[i + 1] (kNone for none): once t has passed the manifold

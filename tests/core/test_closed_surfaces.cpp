@@ -246,6 +246,14 @@ const Case &sphere_contour_stack_case() {
   return c;
 }
 
+const Case &cylinder_contour_stack_case() {
+  // A cylinder cut by 40 planes across its axis: its flat ends get no points but their rims,
+  // loops 2 wide (50 spacings) that the width rule keeps open as borders; they lie in one cut
+  // each and are capped in their plane (754 boundary edges in 2 loops before).
+  static const Case c = make_case("cylinder contour stack", cylinder_contour_stack(40, 3, 1));
+  return c;
+}
+
 }  // namespace
 
 MOA_CONTRACT_TESTS(fibonacci_sphere)
@@ -269,6 +277,7 @@ MOA_CONTRACT_TESTS(survey_coordinates)
 MOA_CONTRACT_TESTS(contour_stack)
 MOA_CONTRACT_TESTS(fine_contour_stack)
 MOA_CONTRACT_TESTS(sphere_contour_stack)
+MOA_CONTRACT_TESTS(cylinder_contour_stack)
 
 static void test_fibonacci_sphere_closed_genus0(void **) { MOA_EXPECT(closed_failure(fibonacci_sphere_case(), 0)); }
 static void test_random_sphere_closed_genus0(void **) { MOA_EXPECT(closed_failure(random_sphere_case(), 0)); }
@@ -330,6 +339,9 @@ static void test_fine_contour_stack_closed_genus1(void **) {
 static void test_sphere_contour_stack_closed_genus0(void **) {
   MOA_EXPECT(closed_failure(sphere_contour_stack_case(), 0));
 }
+static void test_cylinder_contour_stack_closed_genus0(void **) {
+  MOA_EXPECT(closed_failure(cylinder_contour_stack_case(), 0));
+}
 
 // Near the poles of a contour stack the next cut can lie farther than a list reaches along a
 // point's own cut: every list must still hold a point of another cut (neighbors.cpp), or the
@@ -387,6 +399,8 @@ int main(void) {
       MOA_CONTRACT_ENTRIES(sphere_contour_stack),
       cmocka_unit_test(test_sphere_contour_stack_closed_genus0),
       cmocka_unit_test(test_contour_lists_reach_across),
+      MOA_CONTRACT_ENTRIES(cylinder_contour_stack),
+      cmocka_unit_test(test_cylinder_contour_stack_closed_genus0),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,11 +1,13 @@
 // The loop module's last-resort patch (src/core/hole_patch.hpp) on loops whose best
-// triangulation is known.
+// triangulation is known, and its caps of flat cuts (src/core/cut_cap.hpp).
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
 #include <utility>
 #include <vector>
 
+#include "core/cut_cap.hpp"
 #include "core/hole_patch.hpp"
 
 // cmocka last: its macros clash with names in the standard headers.
@@ -115,6 +117,48 @@ void repeated_vertices_and_degenerate_loops_give_nothing(void **) {
   assert_true(moa::smoothest_patch(points, {0, 1}, rim, kNoEdges).empty());
 }
 
+// The cap of a loop in one cut of a contour stack (src/core/cut_cap.hpp): a star of 12 tips in
+// a tilted plane, both ways round, and a circle of 600 points whose every corner is within 0.6
+// degrees of flat. The cap must be a patch of the loop whose triangles all face one way and
+// add up to the polygon's area: then they tile it without overlap.
+void flat_caps_tile_the_polygon(void **) {
+  const Vec3 e1 = moa::normalized(Vec3{1, 0.2, 0.3});
+  const Vec3 n = moa::normalized(moa::cross(e1, {0, 1, 0})), e2 = moa::cross(n, e1);
+  auto signed_area = [&](const Vec3 &a, const Vec3 &b, const Vec3 &c) {
+    return 0.5 * dot(moa::cross(b - a, c - a), n);
+  };
+  for (int round = 0; round < 3; ++round) {
+    const std::size_t count = round < 2 ? 24 : 600;
+    std::vector<Vec3> points;
+    std::vector<uint32_t> loop;
+    double area = 0;  // of the polygon, as a fan from its first corner
+    for (std::size_t i = 0; i < count; ++i) {
+      const double a = 2 * M_PI * double(i) / double(count);
+      const double r = round < 2 && i % 2 == 1 ? 0.4 : 1.0;
+      points.push_back(e1 * (r * std::cos(a)) + e2 * (r * std::sin(a)) + Vec3{5, -3, 2});
+      loop.push_back(uint32_t(i));
+    }
+    if (round == 1) std::reverse(loop.begin(), loop.end());
+    for (std::size_t i = 0; i < count; ++i)
+      area += signed_area(points[loop[0]], points[loop[i]], points[loop[(i + 1) % count]]);
+    const std::vector<Tri> cap = moa::flat_cap(points, loop);
+    assert_patch_of(cap, loop);
+    double covered = 0;
+    for (const Tri &t : cap) {
+      const double a = signed_area(points[t[0]], points[t[1]], points[t[2]]);
+      assert_true(a * area > 0);  // facing the loop's way
+      covered += a;
+    }
+    assert_true(std::fabs(covered - area) < 1e-9 * std::fabs(area));
+  }
+}
+
+void crossing_and_short_loops_get_no_cap(void **) {
+  const std::vector<Vec3> points = {{0, 0, 0}, {1, 1, 0}, {1, 0, 0}, {0, 1, 0}};
+  assert_true(moa::flat_cap(points, {0, 1, 2, 3}).empty());  // a bow tie: no area
+  assert_true(moa::flat_cap(points, {0, 1}).empty());
+}
+
 }  // namespace
 
 int main() {
@@ -123,6 +167,8 @@ int main() {
       cmocka_unit_test(bent_square_follows_the_crease),
       cmocka_unit_test(existing_edges_are_avoided),
       cmocka_unit_test(repeated_vertices_and_degenerate_loops_give_nothing),
+      cmocka_unit_test(flat_caps_tile_the_polygon),
+      cmocka_unit_test(crossing_and_short_loops_get_no_cap),
   };
   return cmocka_run_group_tests(tests, nullptr, nullptr);
 }

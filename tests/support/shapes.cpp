@@ -455,7 +455,12 @@ Points torus_contour_stack(double per_gap) {
                        per_gap, 1);
 }
 
-Points sphere_contour_stack(std::size_t slices, double per_gap, std::uint64_t seed) {
+namespace {
+
+// Circles round the axis (1, 0.3, 0.2) at the middles of `slices` even bands of heights -1 to 1,
+// of radius radius(height), each sampled evenly from a random start, `per_gap` points per band.
+template <class Radius>
+Points circle_stack(std::size_t slices, double per_gap, std::uint64_t seed, Radius radius) {
   Rng rng(seed);
   const double pi = 3.14159265358979323846;
   // The axis and two unit directions across it.
@@ -468,7 +473,7 @@ Points sphere_contour_stack(std::size_t slices, double per_gap, std::uint64_t se
   const double gap = 2.0 / double(slices), step = gap / per_gap;
   Points p;
   for (std::size_t s = 0; s < slices; ++s) {
-    const double h = -1 + (double(s) + 0.5) * gap, r = std::sqrt(1 - h * h);
+    const double h = -1 + (double(s) + 0.5) * gap, r = radius(h);
     // Evenly along the circle from a random start, as a segmentation's contours come.
     const std::size_t count = std::max<std::size_t>(3, std::size_t(std::lround(2 * pi * r / step)));
     const double start = rng.uniform();
@@ -480,6 +485,16 @@ Points sphere_contour_stack(std::size_t slices, double per_gap, std::uint64_t se
     }
   }
   return p;
+}
+
+}  // namespace
+
+Points sphere_contour_stack(std::size_t slices, double per_gap, std::uint64_t seed) {
+  return circle_stack(slices, per_gap, seed, [](double h) { return std::sqrt(1 - h * h); });
+}
+
+Points cylinder_contour_stack(std::size_t slices, double per_gap, std::uint64_t seed) {
+  return circle_stack(slices, per_gap, seed, [](double) { return 1.0; });
 }
 
 Points thin_points(const Points &candidates, double min_distance) {

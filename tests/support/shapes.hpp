@@ -87,6 +87,9 @@ Points torus_contour_stack(double per_gap);
 // middles of even bands, each circle sampled evenly from a random start, `per_gap` points per
 // plane gap. Near the poles the circles lie several gaps apart on the surface.
 Points sphere_contour_stack(std::size_t slices, double per_gap, std::uint64_t seed);
+// A cylinder of radius 1 round the same axis, 2 long, cut the same way: its flat ends lie
+// beyond the first and last circles and get no points.
+Points cylinder_contour_stack(std::size_t slices, double per_gap, std::uint64_t seed);
 // Greedy blue-noise thinning: keeps candidates (in order) at least min_distance from all kept.
 Points thin_points(const Points &candidates, double min_distance);
 
