@@ -18,10 +18,8 @@ double cross2(const Point2 &o, const Point2 &a, const Point2 &b) {
 
 // The smallest angle of triangle abc (radians).
 double smallest_angle(const Vec3 &a, const Vec3 &b, const Vec3 &c) {
-  auto angle = [](const Vec3 &p, const Vec3 &q, const Vec3 &r) {
-    return std::atan2(norm(cross(q - p, r - p)), dot(q - p, r - p));
-  };
-  return std::min({angle(a, b, c), angle(b, c, a), angle(c, a, b)});
+  return std::min({angle_between(b - a, c - a), angle_between(c - b, a - b),
+                   angle_between(a - c, b - c)});
 }
 
 }  // namespace

@@ -24,30 +24,16 @@ PcaFrame frame_of(const Eigen::Matrix3d &cov, const Eigen::Vector3d &centre) {
   return f;
 }
 
-}  // namespace
-
-PcaFrame pca_frame(const std::vector<Vec3> &p, uint32_t self, const uint32_t *nb, unsigned k) {
-  Eigen::Vector3d mean = vec(p[self]);
-  for (unsigned j = 0; j < k; ++j) mean += vec(p[nb[j]]);
-  mean /= double(k + 1);
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  auto add = [&](uint32_t i) {
-    Eigen::Vector3d d = vec(p[i]) - mean;
-    cov += d * d.transpose();
-  };
-  add(self);
-  for (unsigned j = 0; j < k; ++j) add(nb[j]);
-  return frame_of(cov, mean);
-}
-
-PcaFrame pca_frame_two_sheets(const std::vector<Vec3> &p, uint32_t self, const uint32_t *nb,
-                              unsigned k, const bool *far_sheet) {
+// The frame of point `self` and its k neighbours `nb`, each scattered about the centre of its
+// sheet (sheet_of(j): 0, with self, or 1); centred on sheet 0.
+template <class SheetOf>
+PcaFrame sheets_frame(const std::vector<Vec3> &p, uint32_t self, const uint32_t *nb, unsigned k,
+                      SheetOf sheet_of) {
   Eigen::Vector3d mean[2] = {vec(p[self]), Eigen::Vector3d::Zero()};
   double count[2] = {1, 0};
   for (unsigned j = 0; j < k; ++j) {
-    const int sheet = far_sheet[j] ? 1 : 0;
-    mean[sheet] += vec(p[nb[j]]);
-    ++count[sheet];
+    mean[sheet_of(j)] += vec(p[nb[j]]);
+    ++count[sheet_of(j)];
   }
   for (int s = 0; s < 2; ++s)
     if (count[s] > 0) mean[s] /= count[s];
@@ -57,8 +43,19 @@ PcaFrame pca_frame_two_sheets(const std::vector<Vec3> &p, uint32_t self, const u
     cov += d * d.transpose();
   };
   add(self, 0);
-  for (unsigned j = 0; j < k; ++j) add(nb[j], far_sheet[j] ? 1 : 0);
+  for (unsigned j = 0; j < k; ++j) add(nb[j], sheet_of(j));
   return frame_of(cov, mean[0]);
+}
+
+}  // namespace
+
+PcaFrame pca_frame(const std::vector<Vec3> &p, uint32_t self, const uint32_t *nb, unsigned k) {
+  return sheets_frame(p, self, nb, k, [](unsigned) { return 0; });
+}
+
+PcaFrame pca_frame_two_sheets(const std::vector<Vec3> &p, uint32_t self, const uint32_t *nb,
+                              unsigned k, const bool *far_sheet) {
+  return sheets_frame(p, self, nb, k, [far_sheet](unsigned j) { return far_sheet[j] ? 1 : 0; });
 }
 
 double flatness_ratio(const PcaFrame &f) {
