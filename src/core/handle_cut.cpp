@@ -85,17 +85,44 @@ void append_ring(const MeshState &mesh, uint32_t v, std::vector<uint32_t> &out) 
         out.push_back(x);
 }
 
+// Each vertex's ring (append_ring), listed on first use: the searches for waists ask for the
+// same rings many times over (each vertex's from each of its neighbours), and listing one walks
+// the vertex's faces. The mesh must not change while a Rings is in use.
+class Rings {
+ public:
+  Rings(const MeshState &mesh, std::size_t points)
+      : mesh_(mesh), start_(points, kNone), size_(points, 0) {}
+  // Valid until the next call.
+  const uint32_t *of(uint32_t v, uint32_t &count) {
+    if (start_[v] == kNone) {
+      start_[v] = uint32_t(pool_.size());
+      append_ring(mesh_, v, pool_);
+      size_[v] = uint32_t(pool_.size()) - start_[v];
+    }
+    count = size_[v];
+    return pool_.data() + start_[v];
+  }
+  void copy(uint32_t v, std::vector<uint32_t> &out) {
+    uint32_t count;
+    const uint32_t *ring = of(v, count);
+    out.assign(ring, ring + count);
+  }
+
+ private:
+  const MeshState &mesh_;
+  std::vector<uint32_t> start_, size_, pool_;  // where each ring starts in the pool, its size
+};
+
 // Cycles of three edges that are not one face's, and of four edges without a chord, all edges
 // with two faces, through the given vertices. From each vertex u: a three-edge cycle joins two
 // of its neighbours; a four-edge cycle runs through two of them to a vertex x two steps away.
-std::vector<Cycle> short_cycles(const MeshState &mesh, const std::vector<uint32_t> &at) {
+std::vector<Cycle> short_cycles(const MeshState &mesh, const std::vector<uint32_t> &at,
+                                std::size_t points) {
   std::vector<Cycle> cycles;
   IndexMarks near, second;  // the neighbours of u, and the vertices two steps from it
   std::vector<uint32_t> ring, ring_v, far, common;
-  auto neighbours = [&](uint32_t v, std::vector<uint32_t> &out) {
-    out.clear();
-    append_ring(mesh, v, out);
-  };
+  Rings rings(mesh, points);
+  auto neighbours = [&](uint32_t v, std::vector<uint32_t> &out) { rings.copy(v, out); };
   for (uint32_t u : at) {
     neighbours(u, ring);
     near.clear();
@@ -121,13 +148,15 @@ std::vector<Cycle> short_cycles(const MeshState &mesh, const std::vector<uint32_
       common.clear();
       for (uint32_t w : ring_v)
         if (near.has(w)) common.push_back(w);
-      for (std::size_t i = 0; i < common.size(); ++i)
+      for (std::size_t i = 0; i < common.size(); ++i) {
+        uint32_t count;
+        const uint32_t *ring_i = rings.of(common[i], count);
         for (std::size_t j = i + 1; j < common.size(); ++j) {
-          uint32_t fs[2];
-          if (mesh.edge_faces(common[i], common[j], fs) > 0) continue;  // a chord
+          if (std::find(ring_i, ring_i + count, common[j]) != ring_i + count) continue;  // a chord
           const Corners c = corners_of({u, common[i], x, common[j]});
           if (edges_full(mesh, c, 4)) cycles.push_back(canonical(c, 4));
         }
+      }
     }
   }
   std::sort(cycles.begin(), cycles.end());
@@ -163,8 +192,7 @@ class TunnelFinder {
         dist_(g.points.size(), kFar),
         pred_(g.points.size(), kNone),
         hops_(g.points.size(), 0),
-        ring_start_(g.points.size(), kNone),
-        ring_size_(g.points.size(), 0) {}
+        rings_(g.mesh, g.points.size()) {}
 
   // The shortest tunnel waist through each vertex of `at` (with a closed fan, on a piece
   // that can have handles), where it has one; whether it separates the surface is left to
@@ -203,19 +231,31 @@ class TunnelFinder {
 
   void measure_pieces() {
     const std::vector<Vec3> &w = g_.points.work;
+    // Faces and vertices come in runs of one piece (most of them the main piece): one hash
+    // per run. An open edge joins two vertices with open fans, and most fans are closed.
+    uint32_t last = kNone;
+    Piece *p = nullptr;
     for (uint32_t f = 0; f < g_.mesh.face_count(); ++f) {
       if (!g_.mesh.alive(f)) continue;
       const Tri t = g_.mesh.oriented(f);
-      Piece &p = pieces_[g_.mesh.component(f)];
-      p.volume += dot(w[t[0]] - w[0], cross(w[t[1]] - w[0], w[t[2]] - w[0]));
-      ++p.faces;
+      const uint32_t piece = g_.mesh.component(f);
+      if (piece != last) p = &pieces_[last = piece];
+      p->volume += dot(w[t[0]] - w[0], cross(w[t[1]] - w[0], w[t[2]] - w[0]));
+      ++p->faces;
       for (int i = 0; i < 3; ++i) {
+        const uint32_t a = t[i], b = t[(i + 1) % 3];
         uint32_t fs[2];
-        p.open_edges += g_.mesh.edge_faces(t[i], t[(i + 1) % 3], fs) == 1;
+        if (!g_.mesh.fan_closed(a) && !g_.mesh.fan_closed(b))
+          p->open_edges += g_.mesh.edge_faces(a, b, fs) == 1;
       }
     }
-    for (uint32_t v = 0; v < g_.points.size(); ++v)
-      if (g_.mesh.is_used(v)) ++pieces_[piece_of(v)].vertices;
+    last = kNone;
+    for (uint32_t v = 0; v < g_.points.size(); ++v) {
+      if (!g_.mesh.is_used(v)) continue;
+      const uint32_t piece = piece_of(v);
+      if (piece != last) p = &pieces_[last = piece];
+      ++p->vertices;
+    }
   }
 
   // Whether an edge from v rises steeply off v's tangent plane on the outer side: the surface
@@ -236,16 +276,7 @@ class TunnelFinder {
     return false;
   }
 
-  // The vertices joined to v by an edge, listed on first use.
-  const uint32_t *ring(uint32_t v, uint32_t &count) {
-    if (ring_start_[v] == kNone) {
-      ring_start_[v] = uint32_t(ring_pool_.size());
-      append_ring(g_.mesh, v, ring_pool_);
-      ring_size_[v] = uint32_t(ring_pool_.size()) - ring_start_[v];
-    }
-    count = ring_size_[v];
-    return ring_pool_.data() + ring_start_[v];
-  }
+  const uint32_t *ring(uint32_t v, uint32_t &count) { return rings_.of(v, count); }
 
   // Dijkstra from s over the edges, up to half the corners of the longest waist; then the
   // cycles that close through an edge between two of its branches, shortest first.
@@ -368,8 +399,7 @@ class TunnelFinder {
   std::vector<uint32_t> pred_;
   std::vector<uint8_t> hops_;
   std::vector<uint32_t> touched_, settled_, cycle_, sorted_;
-  // Each vertex's ring, once listed: where it starts in the pool and how long it is.
-  std::vector<uint32_t> ring_start_, ring_size_, ring_pool_;
+  Rings rings_;
   std::vector<std::pair<double, uint32_t>> heap_;
   std::vector<Closing> closing_;
 };
@@ -568,7 +598,7 @@ std::size_t cut_waists(GrowthState &g, const std::vector<Cycle> &waists) {
 std::size_t cut_thin_handles(GrowthState &g, std::size_t first_face) {
   // The cycles are sought only around the faces the loop module added, and one ring beyond:
   // a bridge becomes a handle when the holes beside it are closed.
-  return cut_waists(g, short_cycles(g.mesh, vertices_near(g.mesh, first_face)));
+  return cut_waists(g, short_cycles(g.mesh, vertices_near(g.mesh, first_face), g.points.size()));
 }
 
 std::size_t cut_narrow_tunnels(GrowthState &g, std::size_t first_face) {

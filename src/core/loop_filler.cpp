@@ -323,9 +323,14 @@ class LoopFiller {
     const std::size_t live = g_.mesh.face_count() - g_.mesh.removed_count();
     const std::size_t max_sparse = std::max(kMaxSparseFaces, live / kSparseShare);
     std::map<uint32_t, std::vector<uint32_t>> small;
-    for (uint32_t f = 0; f < g_.mesh.face_count(); ++f)
-      if (g_.mesh.alive(f) && pieces.faces(pieces.of(f)) <= max_sparse)
-        small[pieces.of(f)].push_back(f);
+    uint32_t last = kNone;
+    bool last_small = false;
+    for (uint32_t f = 0; f < g_.mesh.face_count(); ++f) {
+      if (!g_.mesh.alive(f)) continue;
+      const uint32_t piece = pieces.of(f);
+      if (piece != last) last_small = pieces.faces(last = piece) <= max_sparse;
+      if (last_small) small[piece].push_back(f);
+    }
     const auto &w = g_.points.work;
     const double sparse_edge = kSparseSpacings * g_.spacing;
     std::size_t removed = 0;
@@ -397,8 +402,14 @@ class LoopFiller {
           parent_[root(t[2])] = root(t[0]);
         }
       for (uint32_t v = 0; v < parent_.size(); ++v) parent_[v] = root(v);  // flat from here on
+      // Faces come in runs of one piece (the main piece, most of them): one hash per run.
+      uint32_t last = kNone;
+      std::size_t *count = nullptr;
       for (uint32_t f = 0; f < mesh.face_count(); ++f)
-        if (mesh.alive(f)) ++faces_[of(f)];
+        if (mesh.alive(f)) {
+          if (of(f) != last) count = &faces_[last = of(f)];
+          ++*count;
+        }
     }
     uint32_t of(uint32_t face) const { return parent_[mesh_.stored(face)[0]]; }
     std::size_t faces(uint32_t piece) const { return faces_.at(piece); }
@@ -416,8 +427,14 @@ class LoopFiller {
   // Live faces of each piece of the mesh (orientation component), by its representative.
   std::unordered_map<uint32_t, std::size_t> faces_per_component() {
     std::unordered_map<uint32_t, std::size_t> count;
+    uint32_t last = kNone;  // one hash per run of faces of one component, as in Pieces
+    std::size_t *n = nullptr;
     for (uint32_t f = 0; f < g_.mesh.face_count(); ++f)
-      if (g_.mesh.alive(f)) ++count[g_.mesh.component(f)];
+      if (g_.mesh.alive(f)) {
+        const uint32_t c = g_.mesh.component(f);
+        if (c != last) n = &count[last = c];
+        ++*n;
+      }
     return count;
   }
 
@@ -860,7 +877,14 @@ class LoopFiller {
   // more, however the scan is shaped.
   void classify_and_pool() {
     std::unordered_map<uint32_t, uint32_t> &loop_of_vertex = loop_of_vertex_;
-    std::unordered_map<uint32_t, std::size_t> faces_of_component = faces_per_component();
+    // Counted only if a loop gets as far as the test that needs it: a pass over every face.
+    std::unordered_map<uint32_t, std::size_t> faces_of_component;
+    bool counted = false;
+    auto surface_vertices = [&](uint32_t piece) {
+      if (!counted) faces_of_component = faces_per_component();
+      counted = true;
+      return 0.5 * double(faces_of_component[piece]);
+    };
     const double sparse_spacing = kSparseSpacings * g_.spacing;
     for (uint32_t l = 0; l < loops_.size(); ++l) {
       Loop &loop = loops_[l];
@@ -878,7 +902,6 @@ class LoopFiller {
       uint32_t fs[2];
       g_.mesh.edge_faces(loop.vertices[1 % n], loop.vertices[0], fs);
       loop.piece = g_.mesh.component(fs[0]);
-      const double surface_vertices = 0.5 * double(faces_of_component[loop.piece]);
       // Narrow, or else small; a strip is narrow by its waists too, the spacing capped where
       // the loop runs among stray points: their own spacing would make a gap of any width among
       // them look narrow. The dearer tests come last: the waists take a quadratic number of
@@ -886,7 +909,7 @@ class LoopFiller {
       loop.fillable =
           g_.params.solid != 0 || width <= hole_width ||
           widest_waist(loop.vertices) <= g_.params.hole_size * std::min(spacing, sparse_spacing) ||
-          (double(n) <= kSmallLoopShare * std::sqrt(surface_vertices) &&
+          (double(n) <= kSmallLoopShare * std::sqrt(surface_vertices(loop.piece)) &&
            width <= kSmallLoopWidths * hole_width && bends(loop.vertices));
       loop.flat_cut = !loop.fillable && g_.nb.lined && in_one_cut(loop.vertices, spacing);
     }
