@@ -30,19 +30,43 @@ bool share_other_vertex(const Tri &a, const Tri &b, uint32_t v) {
   return false;
 }
 
+// Whether the n faces at v, all alive, form one fan: walked from the first across shared
+// vertices, each reaches the rest. `others` is scratch space. The common case, decided on a
+// copy of the faces' other two corners rather than by the pairwise test below.
+bool one_live_fan(uint32_t v, const uint32_t *faces, uint32_t n, const std::vector<Tri> &tris,
+                  const std::vector<char> &alive, std::vector<uint32_t> &others) {
+  others.clear();
+  for (uint32_t i = 0; i < n; ++i) {
+    if (!alive[faces[i]]) return false;
+    for (uint32_t x : tris[faces[i]])
+      if (x != v) others.push_back(x);
+  }
+  if (others.size() != 2 * std::size_t(n)) return false;  // a face with v twice
+  // Faces reached so far are others[0, 2 * reached); the rest are swapped in as they are met.
+  uint32_t reached = 1;
+  for (uint32_t k = 0; k < 2 * reached; ++k)
+    for (uint32_t j = reached; j < n; ++j)
+      if (others[2 * j] == others[k] || others[2 * j + 1] == others[k]) {
+        std::swap(others[2 * j], others[2 * reached]);
+        std::swap(others[2 * j + 1], others[2 * reached + 1]);
+        ++reached;
+      }
+  return reached == n;
+}
+
 // Removes, at every vertex whose faces form several fans, all fans but the largest. Removal
 // can split fans elsewhere, so repeat until nothing changes. Returns faces removed.
 std::size_t enforce_single_fans(std::size_t nv, const std::vector<Tri> &tris,
                                 std::vector<char> &alive) {
   std::size_t removed = 0;
-  DisjointSets fan;  // reused from vertex to vertex, as is size
-  std::vector<uint32_t> size;
+  DisjointSets fan;  // reused from vertex to vertex, as are size and others
+  std::vector<uint32_t> size, others;
   for (bool changed = true; changed;) {
     changed = false;
     Incidence inc(nv, tris, alive);
     for (uint32_t v = 0; v < nv; ++v) {
       uint32_t b = inc.start[v], e = inc.start[v + 1], n = e - b;
-      if (n < 2) continue;
+      if (n < 2 || one_live_fan(v, &inc.faces[b], n, tris, alive, others)) continue;
       fan.reset(n);
       auto root = [&](uint32_t x) { return fan.root(x); };
       for (uint32_t i = 0; i < n; ++i)
@@ -88,7 +112,7 @@ std::size_t orient_outward(const PointSet &points, std::vector<Tri> &tris,
           if (h == f) continue;
           const Tri &t = tris[h];
           if (t[0] == w || t[1] == w || t[2] == w) {
-            comp.join(f, h);
+            if (h > f) comp.join(f, h);  // each pair once: h meets f on this edge too
             shared = true;
           }
         }

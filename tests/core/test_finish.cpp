@@ -1,0 +1,160 @@
+// The final stage (src/core/finish.cpp) on face lists made by hand: closed components turned
+// outward, and at a vertex whose faces form several fans all but the largest removed, whatever
+// order the faces come in.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <set>
+#include <vector>
+
+#include "core/finish.hpp"
+#include "core/point_set.hpp"
+
+// cmocka last: its macros clash with names in the standard headers.
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+extern "C" {  // this cmocka's header has no C++ guard of its own
+#include <cmocka.h>
+}
+
+namespace {
+
+using moa::Tri;
+using moa::Vec3;
+
+moa::PointSet points_of(const std::vector<Vec3> &xyz) {
+  moa::PointSet p;
+  p.work = xyz;
+  p.input_count = xyz.size();
+  return p;
+}
+
+// An octahedron around `centre` (vertices first + 0..5), its faces oriented outward.
+void add_octahedron(std::vector<Vec3> &xyz, std::vector<Tri> &faces, const Vec3 &centre) {
+  const uint32_t o = uint32_t(xyz.size());
+  for (const Vec3 &d : {Vec3{1, 0, 0}, Vec3{-1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, -1, 0},
+                        Vec3{0, 0, 1}, Vec3{0, 0, -1}})
+    xyz.push_back(centre + d);
+  const uint32_t px = o, nx = o + 1, py = o + 2, ny = o + 3, pz = o + 4, nz = o + 5;
+  for (const Tri &t : {Tri{px, py, pz}, Tri{py, nx, pz}, Tri{nx, ny, pz}, Tri{ny, px, pz},
+                       Tri{py, px, nz}, Tri{nx, py, nz}, Tri{ny, nx, nz}, Tri{px, ny, nz}})
+    faces.push_back(t);
+}
+
+double signed_volume(const std::vector<Vec3> &xyz, const std::vector<Tri> &faces) {
+  double v = 0;
+  for (const Tri &t : faces) v += dot(xyz[t[0]], cross(xyz[t[1]], xyz[t[2]]));
+  return v / 6;
+}
+
+std::set<std::set<uint32_t>> corner_sets(const std::vector<Tri> &faces) {
+  std::set<std::set<uint32_t>> out;
+  for (const Tri &t : faces) out.insert({t[0], t[1], t[2]});
+  return out;
+}
+
+// Inward faces in a scrambled order: all kept, each turned outward.
+void closed_inward_turned_out(void **) {
+  std::vector<Vec3> xyz;
+  std::vector<Tri> faces;
+  add_octahedron(xyz, faces, {0, 0, 0});
+  const auto expected = corner_sets(faces);
+  for (Tri &t : faces) std::swap(t[1], t[2]);
+  std::reverse(faces.begin(), faces.end());
+  std::swap(faces[0], faces[5]);
+  const moa::PointSet points = points_of(xyz);
+  moa_stats stats{};
+  moa::finish_mesh(points, faces, stats);
+  assert_int_equal(faces.size(), 8);
+  assert_int_equal(stats.triangles_removed, 0);
+  assert_int_equal(stats.boundary_edges, 0);
+  assert_true(corner_sets(faces) == expected);
+  assert_true(signed_volume(xyz, faces) > 0);
+}
+
+// A closed fan whose faces are listed so that no two in a row share an edge is one fan.
+void scrambled_closed_fan_kept(void **) {
+  // A hexagonal bipyramid: apexes 0 and 7, ring 1..6.
+  std::vector<Vec3> xyz{{0, 0, 1}};
+  for (int i = 0; i < 6; ++i) xyz.push_back({std::cos(i * M_PI / 3), std::sin(i * M_PI / 3), 0});
+  xyz.push_back({0, 0, -1});
+  std::vector<Tri> faces;
+  for (int i : {0, 3, 1, 4, 2, 5}) {
+    const uint32_t a = 1 + uint32_t(i), b = 1 + uint32_t((i + 1) % 6);
+    faces.push_back({0, a, b});
+    faces.push_back({7, b, a});
+  }
+  const moa::PointSet points = points_of(xyz);
+  moa_stats stats{};
+  moa::finish_mesh(points, faces, stats);
+  assert_int_equal(faces.size(), 12);
+  assert_int_equal(stats.triangles_removed, 0);
+  assert_int_equal(stats.boundary_edges, 0);
+}
+
+// Two open fans at vertex 0 (three faces and two): the smaller goes.
+void two_open_fans_smaller_removed(void **) {
+  std::vector<Vec3> xyz{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {-1, 1, 0},
+                        {0, 0, 1}, {1, 0, 2}, {0, 1, 2}};
+  std::vector<Tri> faces{{0, 5, 6}, {0, 1, 2}, {0, 6, 7}, {0, 2, 3}, {0, 3, 4}};
+  const moa::PointSet points = points_of(xyz);
+  moa_stats stats{};
+  moa::finish_mesh(points, faces, stats);
+  assert_int_equal(stats.triangles_removed, 2);
+  assert_true(corner_sets(faces) ==
+              corner_sets({{0, 1, 2}, {0, 2, 3}, {0, 3, 4}}));
+  assert_int_equal(stats.boundary_edges, 5);  // the chain's rim: 0-1, 1-2, 2-3, 3-4, 4-0
+}
+
+// A closed surface with a stray triangle hanging from one of its vertices: the triangle goes.
+void stray_triangle_at_closed_fan_removed(void **) {
+  std::vector<Vec3> xyz;
+  std::vector<Tri> faces;
+  add_octahedron(xyz, faces, {0, 0, 0});
+  xyz.push_back({2, 0, 0});
+  xyz.push_back({2, 1, 0});
+  faces.insert(faces.begin() + 3, Tri{0, 6, 7});  // vertex 0 is the octahedron's +x
+  const moa::PointSet points = points_of(xyz);
+  moa_stats stats{};
+  moa::finish_mesh(points, faces, stats);
+  assert_int_equal(stats.triangles_removed, 1);
+  assert_int_equal(faces.size(), 8);
+  assert_int_equal(stats.boundary_edges, 0);
+}
+
+// Two closed surfaces touching at one vertex: one of the two fans there goes, with the faces
+// of that fan only.
+void closed_surfaces_touching_at_a_vertex(void **) {
+  std::vector<Vec3> xyz;
+  std::vector<Tri> faces;
+  add_octahedron(xyz, faces, {0, 0, 0});
+  add_octahedron(xyz, faces, {2, 0, 0});
+  // The second octahedron's -x vertex (6 + 1) is the first's +x (0): share it.
+  for (std::size_t f = 8; f < faces.size(); ++f)
+    for (uint32_t &v : faces[f])
+      if (v == 7) v = 0;
+  const moa::PointSet points = points_of(xyz);
+  moa_stats stats{};
+  moa::finish_mesh(points, faces, stats);
+  assert_int_equal(stats.triangles_removed, 4);
+  assert_int_equal(faces.size(), 12);
+  std::size_t at_shared = 0;
+  for (const Tri &t : faces) at_shared += std::count(t.begin(), t.end(), 0u);
+  assert_int_equal(at_shared, 4);
+  assert_int_equal(stats.boundary_edges, 4);  // the rim of the opened octahedron
+}
+
+}  // namespace
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(closed_inward_turned_out),
+      cmocka_unit_test(scrambled_closed_fan_kept),
+      cmocka_unit_test(two_open_fans_smaller_removed),
+      cmocka_unit_test(stray_triangle_at_closed_fan_removed),
+      cmocka_unit_test(closed_surfaces_touching_at_a_vertex),
+  };
+  return cmocka_run_group_tests(tests, nullptr, nullptr);
+}
