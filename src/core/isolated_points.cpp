@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/pca.hpp"
 
@@ -62,16 +63,21 @@ bool stands_alone(const std::vector<Vec3> &w, const Neighborhood &nb,
   const uint32_t *list = nb.of(i);
   kept.clear();
   around.clear();
+  float least = std::numeric_limits<float>::infinity();
   for (unsigned j = 0; j < nb.k; ++j)
     if (!isolated[list[j]]) {
       kept.push_back(list[j]);
       around.push_back(nb.spacing[list[j]]);
+      least = std::min(least, nb.spacing[list[j]]);
     }
   if (kept.size() < 3) return true;  // its list is all but stray points
   double own = 0;
   const std::size_t nearest = std::min<std::size_t>(kSpacingNeighbors, kept.size());
   for (std::size_t j = 0; j < nearest; ++j) own += dist(w[i], w[kept[j]]);
   own /= double(nearest);
+  // Within the bound of the least spacing around, it is within that of the median: nearly
+  // every point of a cloud, spared the median's selection.
+  if (own <= kIsolation * double(least)) return false;
   const auto mid = around.begin() + std::ptrdiff_t(around.size() / 2);
   std::nth_element(around.begin(), mid, around.end());
   if (own <= kIsolation * double(*mid)) return false;
