@@ -24,11 +24,18 @@ namespace {
 using moa::Tri;
 using moa::Vec3;
 
-moa::PointSet points_of(const std::vector<Vec3> &xyz) {
-  moa::PointSet p;
-  p.work = xyz;
-  p.input_count = xyz.size();
-  return p;
+// Runs the final stage on these faces and checks how many faces it kept and removed and how
+// many boundary edges it counted.
+void finish_and_count(const std::vector<Vec3> &xyz, std::vector<Tri> &faces, std::size_t kept,
+                      std::size_t removed, std::size_t boundary_edges) {
+  moa::PointSet points;
+  points.work = xyz;
+  points.input_count = xyz.size();
+  moa_stats stats{};
+  moa::finish_mesh(points, faces, stats);
+  assert_int_equal(faces.size(), kept);
+  assert_int_equal(stats.triangles_removed, removed);
+  assert_int_equal(stats.boundary_edges, boundary_edges);
 }
 
 // An octahedron around `centre` (vertices first + 0..5), its faces oriented outward.
@@ -64,12 +71,7 @@ void closed_inward_turned_out(void **) {
   for (Tri &t : faces) std::swap(t[1], t[2]);
   std::reverse(faces.begin(), faces.end());
   std::swap(faces[0], faces[5]);
-  const moa::PointSet points = points_of(xyz);
-  moa_stats stats{};
-  moa::finish_mesh(points, faces, stats);
-  assert_int_equal(faces.size(), 8);
-  assert_int_equal(stats.triangles_removed, 0);
-  assert_int_equal(stats.boundary_edges, 0);
+  finish_and_count(xyz, faces, 8, 0, 0);
   assert_true(corner_sets(faces) == expected);
   assert_true(signed_volume(xyz, faces) > 0);
 }
@@ -86,12 +88,7 @@ void scrambled_closed_fan_kept(void **) {
     faces.push_back({0, a, b});
     faces.push_back({7, b, a});
   }
-  const moa::PointSet points = points_of(xyz);
-  moa_stats stats{};
-  moa::finish_mesh(points, faces, stats);
-  assert_int_equal(faces.size(), 12);
-  assert_int_equal(stats.triangles_removed, 0);
-  assert_int_equal(stats.boundary_edges, 0);
+  finish_and_count(xyz, faces, 12, 0, 0);
 }
 
 // Two open fans at vertex 0 (three faces and two): the smaller goes.
@@ -99,13 +96,8 @@ void two_open_fans_smaller_removed(void **) {
   std::vector<Vec3> xyz{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {-1, 1, 0},
                         {0, 0, 1}, {1, 0, 2}, {0, 1, 2}};
   std::vector<Tri> faces{{0, 5, 6}, {0, 1, 2}, {0, 6, 7}, {0, 2, 3}, {0, 3, 4}};
-  const moa::PointSet points = points_of(xyz);
-  moa_stats stats{};
-  moa::finish_mesh(points, faces, stats);
-  assert_int_equal(stats.triangles_removed, 2);
-  assert_true(corner_sets(faces) ==
-              corner_sets({{0, 1, 2}, {0, 2, 3}, {0, 3, 4}}));
-  assert_int_equal(stats.boundary_edges, 5);  // the chain's rim: 0-1, 1-2, 2-3, 3-4, 4-0
+  finish_and_count(xyz, faces, 3, 2, 5);  // the chain's rim: 0-1, 1-2, 2-3, 3-4, 4-0
+  assert_true(corner_sets(faces) == corner_sets({{0, 1, 2}, {0, 2, 3}, {0, 3, 4}}));
 }
 
 // A closed surface with a stray triangle hanging from one of its vertices: the triangle goes.
@@ -116,12 +108,7 @@ void stray_triangle_at_closed_fan_removed(void **) {
   xyz.push_back({2, 0, 0});
   xyz.push_back({2, 1, 0});
   faces.insert(faces.begin() + 3, Tri{0, 6, 7});  // vertex 0 is the octahedron's +x
-  const moa::PointSet points = points_of(xyz);
-  moa_stats stats{};
-  moa::finish_mesh(points, faces, stats);
-  assert_int_equal(stats.triangles_removed, 1);
-  assert_int_equal(faces.size(), 8);
-  assert_int_equal(stats.boundary_edges, 0);
+  finish_and_count(xyz, faces, 8, 1, 0);
 }
 
 // Two closed surfaces touching at one vertex: one of the two fans there goes, with the faces
@@ -135,15 +122,10 @@ void closed_surfaces_touching_at_a_vertex(void **) {
   for (std::size_t f = 8; f < faces.size(); ++f)
     for (uint32_t &v : faces[f])
       if (v == 7) v = 0;
-  const moa::PointSet points = points_of(xyz);
-  moa_stats stats{};
-  moa::finish_mesh(points, faces, stats);
-  assert_int_equal(stats.triangles_removed, 4);
-  assert_int_equal(faces.size(), 12);
+  finish_and_count(xyz, faces, 12, 4, 4);  // the rim of the opened octahedron
   std::size_t at_shared = 0;
   for (const Tri &t : faces) at_shared += std::count(t.begin(), t.end(), 0u);
   assert_int_equal(at_shared, 4);
-  assert_int_equal(stats.boundary_edges, 4);  // the rim of the opened octahedron
 }
 
 }  // namespace
