@@ -122,6 +122,22 @@ constexpr double kStrayReach = 2.5;
 constexpr double kSparseSpacings = 4.0;
 constexpr double kTinySparseSpacings = 2.5;
 
+// The live faces under each key (a piece, a component). Faces of one key mostly come in a run
+// (the main piece holds most of them), so the map is looked up once per run, not per face.
+template <class KeyOf>
+std::unordered_map<uint32_t, std::size_t> count_live_faces(const MeshState &mesh, KeyOf key_of) {
+  std::unordered_map<uint32_t, std::size_t> count;
+  uint32_t last = kNone;
+  std::size_t *n = nullptr;
+  for (uint32_t f = 0; f < mesh.face_count(); ++f)
+    if (mesh.alive(f)) {
+      const uint32_t key = key_of(f);
+      if (key != last) n = &count[last = key];
+      ++*n;
+    }
+  return count;
+}
+
 class LoopFiller {
  public:
   explicit LoopFiller(GrowthState &g) : g_(g) {}
@@ -402,14 +418,7 @@ class LoopFiller {
           parent_[root(t[2])] = root(t[0]);
         }
       for (uint32_t v = 0; v < parent_.size(); ++v) parent_[v] = root(v);  // flat from here on
-      // Faces come in runs of one piece (the main piece, most of them): one hash per run.
-      uint32_t last = kNone;
-      std::size_t *count = nullptr;
-      for (uint32_t f = 0; f < mesh.face_count(); ++f)
-        if (mesh.alive(f)) {
-          if (of(f) != last) count = &faces_[last = of(f)];
-          ++*count;
-        }
+      faces_ = count_live_faces(mesh, [this](uint32_t f) { return of(f); });
     }
     uint32_t of(uint32_t face) const { return parent_[mesh_.stored(face)[0]]; }
     std::size_t faces(uint32_t piece) const { return faces_.at(piece); }
@@ -426,16 +435,7 @@ class LoopFiller {
 
   // Live faces of each piece of the mesh (orientation component), by its representative.
   std::unordered_map<uint32_t, std::size_t> faces_per_component() {
-    std::unordered_map<uint32_t, std::size_t> count;
-    uint32_t last = kNone;  // one hash per run of faces of one component, as in Pieces
-    std::size_t *n = nullptr;
-    for (uint32_t f = 0; f < g_.mesh.face_count(); ++f)
-      if (g_.mesh.alive(f)) {
-        const uint32_t c = g_.mesh.component(f);
-        if (c != last) n = &count[last = c];
-        ++*n;
-      }
-    return count;
+    return count_live_faces(g_.mesh, [this](uint32_t f) { return g_.mesh.component(f); });
   }
 
   bool still_open(const std::vector<uint32_t> &loop) const {
