@@ -43,7 +43,8 @@ class TopologyJudge {
   // the manifold, orientation, fold and crossing tests always run. `layers_allowed` also skips
   // the test for faces lying close over t: for the cut of a flattened bridge (handle_cut.cpp),
   // and for the patches and take-ins still refused with it, which the faces across a sharp
-  // crease can overlap in projection without crossing them (loop_filler.cpp, take_in.cpp).
+  // crease can overlap in projection without crossing them (hole_repair.cpp, loop_pieces.cpp,
+  // take_in.cpp).
   // `flat_corners` lets a relaxed judgment pass corners up to just short of 180 degrees (only
   // collinear corners are degenerate then): the caps of flat faces in contour stacks
   // (cut_cap.hpp), whose rims run round many points in a plane.

@@ -92,7 +92,7 @@ Points cylinder_grid(std::size_t around, std::size_t rows, std::size_t rings) {
 const Case &cylinder_case() {
   // The cap and the side grow as two pieces up to the rim, and the strip of one cell between
   // them is bounded by two loops as wide as the rim: borders by their width. They are zipped
-  // together (loop_filler.cpp); before that, 192 boundary edges along both rims.
+  // together (loop_pieces.cpp); before that, 192 boundary edges along both rims.
   static const Case c = make_case("cylinder grid", shuffled(cylinder_grid(48, 20, 8), 21));
   return c;
 }

@@ -1,0 +1,352 @@
+// The loop module's repairs, for holes the fill passes could not close: the faces along them
+// go and the next round refills the wider hole; the last ones are patched whole with the
+// triangulation of their loop that bends the surface least, widened first if need be; pinched
+// vertices are opened.
+#include <algorithm>
+#include <unordered_map>
+
+#include "core/disjoint_sets.hpp"
+#include "core/hole_patch.hpp"
+#include "core/loop_filler.hpp"
+
+namespace moa {
+namespace {
+
+// Longest loop the last-resort patch triangulates (its cost grows with the cube of the length).
+constexpr std::size_t kMaxPatchedLoop = 96;
+// Rings of faces a hole may lose so that a wider hole can be patched, and the total number of
+// rings removed in a run (each costs a pass over the mesh).
+constexpr int kMaxRings = 3;
+// Rings of stars a hole is widened by at most (patch_after_clearing_stars): each ring leaves
+// its vertices to the take-in, which cannot place those standing more than a spacing off the
+// patch (at a sharp crease); a third ring closed a few more holes but left seven times the
+// points out.
+constexpr int kStarRings = 2;
+constexpr std::size_t kMaxWidenings = 256;
+// A spike in a hole (clear_spike_and_patch): vertices tried, and their most faces.
+constexpr std::size_t kSpikeTries = 2;
+constexpr std::size_t kMaxSpikeFaces = 6;
+
+}  // namespace
+
+// The last resort: each hole still open is patched at once with the triangulation of its
+// loop that bends the surface least (hole_patch.hpp), if every triangle of it passes the
+// relaxed judgment. When the faces around the hole fold over it, they go and the wider hole
+// is patched instead; if that fails too, they are put back, and all of it is tried again
+// without the second-layer test; then after clearing a spike, and after clearing the whole
+// stars of the hole's vertices. Returns the holes closed.
+std::size_t LoopFiller::patch_open_holes() {
+  collect_hole_edges();
+  loops_ = trace_loops();
+  classify_and_pool();
+  std::vector<std::vector<uint32_t>> holes;
+  for (const Loop &loop : loops_)
+    if (loop.fillable && loop.vertices.size() <= kMaxPatchedLoop) holes.push_back(loop.vertices);
+  std::size_t closed = 0, widenings = 0;
+  for (const std::vector<uint32_t> &hole : holes) {
+    g_.poll();
+    if (!still_open(hole)) continue;  // widening a neighbouring hole changed it
+    // At a sharp corner the faces across the crease can lie over a patch in projection
+    // without crossing it: when nothing closes the hole with the second-layer test, it is
+    // tried again without it (the crossing test still runs).
+    bool done = false;
+    for (bool layers_allowed : {false, true})
+      if (!done) done = patch_or_widen(hole, layers_allowed, widenings);
+    if (!done) done = clear_spike_and_patch(hole);
+    for (bool layers_allowed : {false, true})
+      if (!done) done = patch_after_clearing_stars(hole, layers_allowed, widenings);
+    closed += done;
+  }
+  return closed;
+}
+
+// Removes the faces along every hole that stayed open although it was small enough to
+// close. Returns the number of faces removed.
+std::size_t LoopFiller::widen_open_holes() {
+  std::vector<uint32_t> ring;
+  for (const auto &kv : hole_loop_) {
+    if (!loops_[kv.second].fillable) continue;
+    uint32_t from = uint32_t(kv.first >> 32), to = uint32_t(kv.first), fs[2];
+    if (g_.mesh.edge_faces(from, to, fs) == 1) ring.push_back(fs[0]);
+  }
+  std::sort(ring.begin(), ring.end());
+  ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+  // The main piece of the mesh (half its faces or more) is never widened away whole: when all
+  // its faces lie along its holes (three points, a tetrahedron's corners), nothing would be
+  // left to fill from. A small piece may go: a stray triangle in a hole blocks its filling.
+  std::unordered_map<uint32_t, std::size_t> on_ring;
+  for (uint32_t f : ring) ++on_ring[g_.mesh.component(f)];
+  const std::unordered_map<uint32_t, std::size_t> in_piece = faces_per_component();
+  std::size_t faces = 0;
+  for (const auto &piece : in_piece) faces += piece.second;
+  std::size_t removed = 0;
+  for (uint32_t f : ring) {
+    const uint32_t piece = g_.mesh.component(f);
+    if (on_ring[piece] == in_piece.at(piece) && 2 * in_piece.at(piece) >= faces) continue;
+    g_.mesh.remove(f);
+    ++removed;
+  }
+  return removed;
+}
+
+// Patches the hole, or else removes up to kMaxRings rings of faces around it and patches the
+// wider hole; puts the faces back if that fails too. Widens first without dropping any vertex
+// out of the mesh, then, if that fails, freely: a closed surface missing a point beats one
+// with a hole.
+bool LoopFiller::patch_or_widen(const std::vector<uint32_t> &hole, bool layers_allowed,
+                                std::size_t &widenings) {
+  return patch_pieces(hole, layers_allowed) ||
+         widen_and_patch(hole, Widening::KeepingVertices, kMaxRings, layers_allowed, widenings) ||
+         widen_and_patch(hole, Widening::Rims, kMaxRings, layers_allowed, widenings);
+}
+
+// At a sharp crease the faces grown from its two sides can overlap in the wedge between them
+// without crossing; a face that shares only a corner with the hole, so that no widening by
+// rims removes it, then lies across every patch. The last try: every face at the hole's
+// vertices goes (up to kStarRings times, from the wider loop each time) and the loop around
+// them is patched; the take-in places the vertices left out again. Or all is put back.
+bool LoopFiller::patch_after_clearing_stars(const std::vector<uint32_t> &hole, bool layers_allowed,
+                                            std::size_t &widenings) {
+  return widen_and_patch(hole, Widening::Stars, kStarRings, layers_allowed, widenings);
+}
+
+// Widens the hole ring by ring (at most `rings`, within the run's budget of widenings) and
+// patches the wider loop after each ring; on failure puts every removed face back.
+bool LoopFiller::widen_and_patch(const std::vector<uint32_t> &hole, Widening widening, int rings,
+                                 bool layers_allowed, std::size_t &widenings) {
+  std::vector<uint32_t> loop = hole;
+  std::vector<Tri> removed;
+  for (int ring = 0; ring < rings && widenings < kMaxWidenings; ++ring) {
+    ++widenings;
+    const bool keep_vertices = widening == Widening::KeepingVertices;
+    const std::vector<Tri> ring_faces =
+        widening == Widening::Stars ? remove_stars(loop) : remove_rim(loop, keep_vertices);
+    removed.insert(removed.end(), ring_faces.begin(), ring_faces.end());
+    if (widening == Widening::Stars) {
+      // The old loop's vertices have no faces left: the new loop runs through the stars' rims.
+      std::vector<uint32_t> corners;
+      for (const Tri &t : ring_faces) corners.insert(corners.end(), t.begin(), t.end());
+      loop = loop_around(corners, ring_faces);
+    } else {
+      loop = loop_around(loop, ring_faces);
+    }
+    if (ring_faces.empty() || loop.empty() || loop.size() > kMaxPatchedLoop) break;
+    if (patch_pieces(loop, layers_allowed)) {
+      g_.stats.triangles_removed += removed.size();
+      return true;
+    }
+  }
+  for (const Tri &t : removed) g_.add_face(t);  // as it was before
+  return false;
+}
+
+// A vertex inside the hole whose few faces reach out to points beyond it (a spike grown from
+// a point that lay in the hole) can pierce every patch of the hole. Its faces go, the hole
+// they leave and then the first one are patched, and the take-in places the point again;
+// or, if a patch is refused, everything is put back. Tried for the two vertices nearest the
+// hole's centre, within the hole's radius of it.
+bool LoopFiller::clear_spike_and_patch(const std::vector<uint32_t> &hole) {
+  const auto &w = g_.points.work;
+  Vec3 centre{};
+  for (uint32_t v : hole) centre = centre + w[v];
+  centre = centre * (1.0 / double(hole.size()));
+  double radius2 = 0;
+  for (uint32_t v : hole) radius2 = std::max(radius2, norm2(w[v] - centre));
+  std::vector<uint32_t> inside;
+  for (uint32_t v : hole) {
+    const uint32_t *nb = g_.nb.of(v);
+    for (unsigned j = 0; j < g_.nb.k; ++j) {
+      const uint32_t x = nb[j];
+      if (g_.mesh.is_used(x) && norm2(w[x] - centre) < radius2 &&
+          std::find(hole.begin(), hole.end(), x) == hole.end())
+        inside.push_back(x);
+    }
+  }
+  auto nearer = [&](uint32_t a, uint32_t b) {
+    const double da = norm2(w[a] - centre), db = norm2(w[b] - centre);
+    return da != db ? da < db : a < b;
+  };
+  std::sort(inside.begin(), inside.end(), nearer);
+  inside.erase(std::unique(inside.begin(), inside.end()), inside.end());
+  if (inside.size() > kSpikeTries) inside.resize(kSpikeTries);
+  for (uint32_t spike : inside) {
+    const FacesAround around = g_.mesh.faces_at(spike);
+    if (around.size() > kMaxSpikeFaces) continue;
+    const std::vector<uint32_t> faces(around.begin(), around.end());
+    std::vector<Tri> fan;
+    std::vector<uint32_t> link;
+    for (uint32_t f : faces) {
+      fan.push_back(g_.mesh.oriented(f));
+      for (uint32_t x : g_.mesh.stored(f))
+        if (x != spike) link.push_back(x);
+    }
+    for (uint32_t f : faces) g_.mesh.remove(f);
+    const std::size_t faces_before = g_.mesh.face_count(), counted = g_.stats.triangles_loops;
+    const std::vector<uint32_t> gap = loop_around(link, fan);
+    if (!gap.empty() && patch_pieces(gap, true) && patch_pieces(hole, true)) {
+      g_.stats.triangles_removed += fan.size();
+      return true;
+    }
+    for (uint32_t f = uint32_t(faces_before); f < g_.mesh.face_count(); ++f)
+      if (g_.mesh.alive(f)) g_.mesh.remove(f);
+    g_.stats.triangles_loops = counted;
+    for (const Tri &t : fan) g_.add_face(t);  // as it was
+  }
+  return false;
+}
+
+// A loop through a vertex twice (a pinch) is two holes meeting there: each is patched on
+// its own. All pieces or none.
+bool LoopFiller::patch_pieces(const std::vector<uint32_t> &loop, bool layers_allowed) {
+  std::vector<std::vector<uint32_t>> pieces;
+  std::vector<uint32_t> rest = loop;
+  std::unordered_map<uint32_t, std::size_t> first;
+  for (std::size_t j = 0; j < rest.size(); ++j) {
+    auto [it, fresh] = first.emplace(rest[j], j);
+    if (fresh) continue;
+    // rest[i .. j) is a closed piece: cut it out and go on from its start.
+    const std::size_t i = it->second;
+    pieces.emplace_back(rest.begin() + std::ptrdiff_t(i), rest.begin() + std::ptrdiff_t(j));
+    rest.erase(rest.begin() + std::ptrdiff_t(i) + 1, rest.begin() + std::ptrdiff_t(j) + 1);
+    first.clear();
+    for (std::size_t k = 0; k <= i; ++k) first.emplace(rest[k], k);
+    j = i;
+  }
+  pieces.push_back(rest);
+  const std::size_t faces_before = g_.mesh.face_count(), counted = g_.stats.triangles_loops;
+  std::size_t done = 0;
+  for (const auto &piece : pieces) {
+    if (piece.size() < 3 || !patch(piece, layers_allowed)) break;
+    ++done;
+  }
+  if (done == pieces.size()) return true;
+  for (uint32_t f = uint32_t(faces_before); f < g_.mesh.face_count(); ++f)
+    if (g_.mesh.alive(f)) g_.mesh.remove(f);
+  g_.stats.triangles_loops = counted;
+  return false;
+}
+
+// Adds the smoothest patch of the loop if all of it passes the judgment; else adds nothing.
+bool LoopFiller::patch(const std::vector<uint32_t> &loop, bool layers_allowed) {
+  // A broken trace is no hole: smoothest_patch wants one face on every edge of the loop.
+  if (loop.size() > kMaxPatchedLoop) return false;
+  const std::vector<Tri> tris = smoothest_patch(g_.mesh, g_.points.work, loop);
+  if (tris.empty() || !g_.add_all_or_none(tris, layers_allowed)) return false;
+  g_.stats.triangles_loops += tris.size();
+  return true;
+}
+
+// Removes every face at the loop's vertices; returns them as they were oriented.
+std::vector<Tri> LoopFiller::remove_stars(const std::vector<uint32_t> &loop) {
+  std::vector<uint32_t> faces;
+  for (uint32_t v : loop)
+    for (uint32_t f : g_.mesh.faces_at(v)) faces.push_back(f);
+  return remove_faces(faces, false);
+}
+
+// Removes the faces on the loop's edges; returns them as they were oriented.
+std::vector<Tri> LoopFiller::remove_rim(const std::vector<uint32_t> &loop, bool keep_vertices) {
+  std::vector<uint32_t> faces;
+  const std::size_t n = loop.size();
+  for (std::size_t j = 0; j < n; ++j) {
+    uint32_t fs[2];
+    if (g_.mesh.edge_faces(loop[j], loop[(j + 1) % n], fs) == 1) faces.push_back(fs[0]);
+  }
+  return remove_faces(faces, keep_vertices);
+}
+
+// Removes the faces listed (a face may be listed twice), in index order; returns them as
+// they were oriented. A vertex whose last face one of them is would drop out of the mesh
+// (the patch of the wider hole spans only the loop's vertices): with keep_vertices, that
+// face stays.
+std::vector<Tri> LoopFiller::remove_faces(std::vector<uint32_t> faces, bool keep_vertices) {
+  std::sort(faces.begin(), faces.end());
+  faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+  std::vector<Tri> removed;
+  for (uint32_t f : faces) {
+    const Tri t = g_.mesh.oriented(f);
+    if (keep_vertices) {
+      bool last = false;
+      for (uint32_t v : t) last |= g_.mesh.faces_at(v).size() == 1;
+      if (last) continue;
+    }
+    removed.push_back(t);
+    g_.mesh.remove(f);
+  }
+  return removed;
+}
+
+// The loop that now runs through most of the given loop's vertices, after remove_rim took
+// the faces `rim`: traced from the faces around the rim's corners alone, which hold every
+// edge of the wider hole, so the cost stays local.
+std::vector<uint32_t> LoopFiller::loop_around(const std::vector<uint32_t> &old,
+                                              const std::vector<Tri> &rim) {
+  std::vector<uint32_t> faces;
+  for (const Tri &t : rim)
+    for (uint32_t v : t) {
+      const FacesAround around = g_.mesh.faces_at(v);
+      faces.insert(faces.end(), around.begin(), around.end());
+    }
+  std::sort(faces.begin(), faces.end());
+  faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+  out_.clear();
+  for (uint32_t f : faces) {
+    if (!g_.mesh.alive(f)) continue;
+    Tri t = g_.mesh.oriented(f);
+    for (int i = 0; i < 3; ++i) {
+      uint32_t a = t[i], b = t[(i + 1) % 3], fs[2];
+      if (g_.mesh.edge_faces(a, b, fs) == 1) out_[b].push_back(a);
+    }
+  }
+  std::vector<Loop> loops = trace_loops(&old);
+  std::vector<uint32_t> sorted(old);
+  std::sort(sorted.begin(), sorted.end());
+  std::size_t best = 0, best_shared = 0;
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    std::size_t shared = 0;
+    for (uint32_t v : loops[l].vertices)
+      shared += std::binary_search(sorted.begin(), sorted.end(), v);
+    if (shared > best_shared) {
+      best_shared = shared;
+      best = l;
+    }
+  }
+  if (best_shared == 0) return {};
+  return std::move(loops[best].vertices);
+}
+
+// Removes, at every vertex whose faces form several fans, the faces of all fans but the
+// largest, opening one hole where a loop could not be closed around a pinch.
+std::size_t open_pinched_vertices(GrowthState &g) {
+  std::size_t removed = 0;
+  std::vector<uint32_t> faces;
+  DisjointSets group;
+  for (uint32_t v = 0; v < g.points.size(); ++v) {
+    if (g.mesh.fan_count(v) < 2) continue;
+    const FacesAround around = g.mesh.faces_at(v);
+    faces.assign(around.begin(), around.end());
+    const std::size_t n = faces.size();
+    group.reset(n);
+    auto root = [&](uint32_t x) { return group.root(x); };
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = i + 1; j < n; ++j) {
+        const Tri &a = g.mesh.stored(faces[i]), &b = g.mesh.stored(faces[j]);
+        int shared = 0;
+        for (uint32_t x : a) shared += (x == b[0] || x == b[1] || x == b[2]);
+        if (shared >= 2) group.join(uint32_t(i), uint32_t(j));
+      }
+    std::vector<uint32_t> size(n, 0);
+    for (std::size_t i = 0; i < n; ++i) ++size[root(uint32_t(i))];
+    uint32_t best = root(0);
+    for (std::size_t i = 0; i < n; ++i)
+      if (size[root(uint32_t(i))] > size[best]) best = root(uint32_t(i));
+    for (std::size_t i = 0; i < n; ++i)
+      if (root(uint32_t(i)) != best) {
+        g.mesh.remove(faces[i]);
+        ++removed;
+      }
+  }
+  return removed;
+}
+
+}  // namespace moa
