@@ -37,13 +37,24 @@ PcaFrame sheets_frame(const std::vector<Vec3> &p, uint32_t self, const uint32_t 
   }
   for (int s = 0; s < 2; ++s)
     if (count[s] > 0) mean[s] /= count[s];
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  // Only the six distinct entries of the symmetric scatter are summed (xx, yx, zx, yy, zy, zz),
+  // not a full outer product per neighbour.
+  double lower[6] = {0, 0, 0, 0, 0, 0};
   auto add = [&](uint32_t i, int s) {
-    Eigen::Vector3d d = vec(p[i]) - mean[s];
-    cov += d * d.transpose();
+    const Eigen::Vector3d d = vec(p[i]) - mean[s];
+    lower[0] += d.x() * d.x();
+    lower[1] += d.y() * d.x();
+    lower[2] += d.z() * d.x();
+    lower[3] += d.y() * d.y();
+    lower[4] += d.z() * d.y();
+    lower[5] += d.z() * d.z();
   };
   add(self, 0);
   for (unsigned j = 0; j < k; ++j) add(nb[j], sheet_of(j));
+  Eigen::Matrix3d cov;
+  cov << lower[0], lower[1], lower[2],  //
+      lower[1], lower[3], lower[4],     //
+      lower[2], lower[4], lower[5];
   return frame_of(cov, mean[0]);
 }
 
