@@ -229,7 +229,7 @@ bool LoopFiller::bends(const std::vector<uint32_t> &loop) const {
   const std::size_t n = loop.size();
   std::vector<Vec3> normals;
   for (uint32_t v : loop) normals.push_back(plane_normal(g_.points, g_.nb, v));
-  const double cos_crease = std::cos(kCreaseAngle * M_PI / 180);
+  const double cos_crease = std::cos(degrees_to_radians(kCreaseAngle));
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t step : {1, 2}) {
       const uint32_t a = loop[i], b = loop[(i + step) % n];
