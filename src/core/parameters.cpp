@@ -47,7 +47,8 @@ const ParamRow kRows[] = {
      0, 180, false, &Params::vertex_fold_angle},
     {"vertex_open_angle",
      "degrees; when beta and gamma both exceed this the vertex-sharing pair "
-     "is a duplicated fan and rejected",
+     "is a duplicated fan and rejected, unless its corners at the shared "
+     "vertex lie side by side",
      0, 180, false, &Params::vertex_open_angle},
     {"max_normal_deviation",
      "degrees; largest angle between a triangle's normal and the local "

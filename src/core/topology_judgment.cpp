@@ -75,6 +75,28 @@ double cosine(const Vec3 &u, const Vec3 &v) {
   return d > 0 ? dot(u, v) / d : 1.0;
 }
 
+// Whether the corners APB and CPD, seen from P in the plane of APB, share no direction: two
+// triangles side by side in one fan, not one folded over the other. Each corner is an arc of
+// directions narrower than half a turn; two such arcs meet when one starts inside the other.
+bool corners_apart(const Vec3 &P, const Vec3 &A, const Vec3 &B, const Vec3 &C, const Vec3 &D) {
+  const Vec3 n = normalized(cross(A - P, B - P));
+  const Vec3 e1 = normalized(A - P), e2 = cross(n, e1);
+  auto direction = [&](const Vec3 &X) { return std::atan2(dot(X - P, e2), dot(X - P, e1)); };
+  struct Arc {
+    double start, width;
+  };
+  auto arc = [](double from, double to) {
+    const double w = std::remainder(to - from, 2 * kPi);  // in [-pi, pi]
+    return w >= 0 ? Arc{from, w} : Arc{to, -w};
+  };
+  auto ahead = [](double from, double to) {  // turn from `from` to `to`, in [0, 2 pi)
+    const double d = std::fmod(to - from, 2 * kPi);
+    return d < 0 ? d + 2 * kPi : d;
+  };
+  const Arc t = arc(0.0, direction(B)), g = arc(direction(C), direction(D));
+  return ahead(t.start, g.start) >= t.width && ahead(g.start, t.start) >= g.width;
+}
+
 // Local planes kept at once (TopologyJudge::plane_at).
 constexpr std::size_t kPlaneCacheSlots = std::size_t(1) << 16;
 
@@ -210,7 +232,10 @@ bool TopologyJudge::merges_across_a_bend(const Tri &t, const EdgeFaces &edges) {
 bool TopologyJudge::vertex_folds(const Tri &t) const {
   // Fig. 8 (1): triangles PAB and PCD sharing only P. A small alpha between the directions to
   // their centres M and N, with both beta = AOB and gamma = COD large (O the centre of A, B,
-  // C, D), marks a duplicated fan.
+  // C, D), marks a duplicated fan, unless the two corners at P lie side by side. Needles (a
+  // contour stack with 20 or more points per slice gap: corners of 3 degrees at one end, 88 at
+  // the other) have the centres of neighbours in a fan within the 15 degrees of alpha: taken
+  // for duplicated fans, such stacks fell apart into dozens or hundreds of pieces.
   for (int i = 0; i < 3; ++i) {
     uint32_t ip = t[i], ia = t[(i + 1) % 3], ib = t[(i + 2) % 3];
     const Vec3 &P = points_.work[ip], &A = points_.work[ia], &B = points_.work[ib];
@@ -228,7 +253,8 @@ bool TopologyJudge::vertex_folds(const Tri &t) const {
       // Angles compared through their cosines: alpha < limit <=> cos(alpha) > cos(limit).
       if (cosine(M - P, N - P) <= cos_vertex_fold_) continue;
       Vec3 O = (A + B + C + D) * 0.25;
-      if (cosine(A - O, B - O) < cos_vertex_open_ && cosine(C - O, D - O) < cos_vertex_open_)
+      if (cosine(A - O, B - O) < cos_vertex_open_ && cosine(C - O, D - O) < cos_vertex_open_ &&
+          !corners_apart(P, A, B, C, D))
         return true;
     }
   }

@@ -254,6 +254,14 @@ const Case &cylinder_contour_stack_case() {
   return c;
 }
 
+const Case &dense_cylinder_contour_stack_case() {
+  // Eight cuts, 20 points per plane gap along each: triangles across a gap are needles (3
+  // degrees at one end), and neighbours side by side in a fan were taken for a duplicated fan
+  // (the vertex-fold test): 1,189 boundary edges in 14 pieces, 148 points left out, before.
+  static const Case c = make_case("dense cylinder contour stack", cylinder_contour_stack(8, 20, 1));
+  return c;
+}
+
 }  // namespace
 
 MOA_CONTRACT_TESTS(fibonacci_sphere)
@@ -278,6 +286,7 @@ MOA_CONTRACT_TESTS(contour_stack)
 MOA_CONTRACT_TESTS(fine_contour_stack)
 MOA_CONTRACT_TESTS(sphere_contour_stack)
 MOA_CONTRACT_TESTS(cylinder_contour_stack)
+MOA_CONTRACT_TESTS(dense_cylinder_contour_stack)
 
 static void test_fibonacci_sphere_closed_genus0(void **) { MOA_EXPECT(closed_failure(fibonacci_sphere_case(), 0)); }
 static void test_random_sphere_closed_genus0(void **) { MOA_EXPECT(closed_failure(random_sphere_case(), 0)); }
@@ -342,6 +351,9 @@ static void test_sphere_contour_stack_closed_genus0(void **) {
 static void test_cylinder_contour_stack_closed_genus0(void **) {
   MOA_EXPECT(closed_failure(cylinder_contour_stack_case(), 0));
 }
+static void test_dense_cylinder_contour_stack_closed_genus0(void **) {
+  MOA_EXPECT(closed_failure(dense_cylinder_contour_stack_case(), 0));
+}
 
 // Near the poles of a contour stack the next cut can lie farther than a list reaches along a
 // point's own cut: every list must still hold a point of another cut (neighbors.cpp), or the
@@ -401,6 +413,8 @@ int main(void) {
       cmocka_unit_test(test_contour_lists_reach_across),
       MOA_CONTRACT_ENTRIES(cylinder_contour_stack),
       cmocka_unit_test(test_cylinder_contour_stack_closed_genus0),
+      MOA_CONTRACT_ENTRIES(dense_cylinder_contour_stack),
+      cmocka_unit_test(test_dense_cylinder_contour_stack_closed_genus0),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
