@@ -275,6 +275,55 @@ std::string overlap_failure(const Case &c) {
   return "";
 }
 
+// Many small objects apart: 100 unit spheres of 50 random points each, scattered through a box
+// 100 wide at least 5 apart. Each closes on its own. The noise estimate's wider neighbourhoods
+// reached across to the next spheres, flat across several of them where a sphere's own 10
+// nearest are curved, so the clean cloud looked noisy and came out smoothed and open (1 of the
+// 100 spheres closed, 1,933 boundary edges).
+constexpr std::size_t kScatteredSpheres = 100;
+constexpr std::size_t kScatteredSpherePoints = 50;
+
+const Case &scattered_spheres_case() {
+  static const Case c = [] {
+    Points p, centres;
+    std::uint64_t state = 0x2545f4914f6cdd1du;
+    auto next = [&state] {  // a fixed linear congruential sequence in [0, 1)
+      state = state * 6364136223846793005u + 1442695040888963407u;
+      return double(state >> 11) / 9007199254740992.0;
+    };
+    while (centres.size() < 3 * kScatteredSpheres) {
+      const double x = 100 * next(), y = 100 * next(), z = 100 * next();
+      bool apart = true;
+      for (std::size_t j = 0; j < centres.size(); j += 3)
+        apart &= std::hypot(x - centres[j], y - centres[j + 1], z - centres[j + 2]) >= 5;
+      if (!apart) continue;
+      centres.insert(centres.end(), {x, y, z});
+      const Points s = sphere_random(kScatteredSpherePoints, 1.0, centres.size());
+      for (std::size_t i = 0; i < s.size(); ++i)
+        p.push_back(s[i] + centres[centres.size() - 3 + i % 3]);
+    }
+    return make_case("100 small spheres scattered in a box", p);
+  }();
+  return c;
+}
+
+// Every sphere closed with genus 0, every point used, and the cloud not smoothed.
+std::string scattered_spheres_failure(const Case &c) {
+  const ContractReport &r = c.report;
+  if (r.components != kScatteredSpheres || r.closed_components != kScatteredSpheres ||
+      r.boundary_edges != 0 || r.genus_sum != 0)
+    return c.name + ": " + std::to_string(r.components) + " pieces (" +
+           std::to_string(r.closed_components) + " closed), " + std::to_string(r.boundary_edges) +
+           " boundary edges, genus " + std::to_string(r.genus_sum) +
+           "; expected 100 closed spheres";
+  if (r.vertices_used != kScatteredSpheres * kScatteredSpherePoints)
+    return c.name + ": " + std::to_string(r.vertices_used) + " points used of 5000";
+  if (c.run.stats.smoothing_passes != 0)
+    return c.name + ": smoothed as a noisy cloud (" +
+           std::to_string(c.run.stats.smoothing_passes) + " passes)";
+  return "";
+}
+
 }  // namespace
 
 MOA_CONTRACT_TESTS(noisy_sphere)
@@ -292,6 +341,12 @@ MOA_CONTRACT_TESTS(jittered_torus)
 static void test_overlap_torus_contract(void **) { MOA_EXPECT(contract_failure(overlap_torus_case())); }
 static void test_overlap_torus_deterministic(void **) {
   MOA_EXPECT(determinism_failure(overlap_torus_case()));
+}
+
+MOA_CONTRACT_TESTS(scattered_spheres)
+
+static void test_scattered_spheres_each_closed(void **) {
+  MOA_EXPECT(scattered_spheres_failure(scattered_spheres_case()));
 }
 
 static void test_torus_outliers_left_out(void **) {
@@ -326,6 +381,8 @@ int main(void) {
       cmocka_unit_test(test_overlap_torus_contract),
       cmocka_unit_test(test_overlap_torus_deterministic),
       cmocka_unit_test(test_overlap_torus_merged_and_closed),
+      MOA_CONTRACT_ENTRIES(scattered_spheres),
+      cmocka_unit_test(test_scattered_spheres_each_closed),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
