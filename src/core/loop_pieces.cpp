@@ -18,6 +18,12 @@ namespace {
 // A piece of at most kMaxSparseFaces faces counts as sparse from kTinySparseSpacings on: a
 // bubble of 8-42 faces that stray points deep in the volume closed among themselves had median
 // edges of 2.9-4.2 spacings (10,000-20,000-point samples with 10-20 % stray points).
+// A closed piece of more than kMaxSparseFaces faces stays however sparse: a small object
+// sampled far more coarsely than the rest of the cloud (a sphere of 100 points beside one of
+// 20,000), which was dropped whole. The pieces that stray points spanned among themselves and
+// that were dropped as sparse (samples of the shared meshes with 20-100 % stray points, random
+// points filling a cube) were all open when larger than that (the nearest to closed had as
+// many border edges as 6.5 % of its faces).
 constexpr std::size_t kMaxStrayFaces = 12;
 constexpr std::size_t kMaxSparseFaces = 64;
 constexpr std::size_t kSparseShare = 64;
@@ -172,12 +178,14 @@ std::size_t LoopFiller::drop_stray_pieces(bool layers) {
   std::size_t removed = 0;
   std::vector<double> edges;
   for (const auto &[piece, faces] : small) {
-    bool on_other = true;
+    bool on_other = true, closed = true;
     edges.clear();
     for (uint32_t f : faces) {
       const Tri &t = g_.mesh.stored(f);
       for (int i = 0; i < 3; ++i) {
         edges.push_back(dist(w[t[i]], w[t[(i + 1) % 3]]));
+        uint32_t fs[2];
+        closed &= g_.mesh.edge_faces(t[i], t[(i + 1) % 3], fs) == 2;
         // Some neighbour of the corner on another piece, within kStrayReach local spacings:
         // the larger of the two points', as a clump of close points has a tiny one.
         const uint32_t v = t[i];
@@ -196,7 +204,7 @@ std::size_t LoopFiller::drop_stray_pieces(bool layers) {
     const bool layer = layers && faces.size() <= kMaxStrayFaces && on_other;
     const double median_edge = edges[edges.size() / 2];
     const bool sparse =
-        median_edge > sparse_edge ||
+        (median_edge > sparse_edge && !(closed && faces.size() > kMaxSparseFaces)) ||
         (faces.size() <= kMaxSparseFaces && median_edge > kTinySparseSpacings * g_.spacing);
     if (!layer && !sparse) continue;
     for (uint32_t f : faces) g_.mesh.remove(f);

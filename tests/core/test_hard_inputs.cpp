@@ -324,6 +324,37 @@ std::string scattered_spheres_failure(const Case &c) {
   return "";
 }
 
+// A coarse object beside a fine one: a unit sphere of 8,000 random points and, 4 away, one of
+// 100 evenly spread points, which Algorithm 1 closes. Its edges are about nine times the
+// cloud's median spacing, and it was dropped whole as a piece spanned among stray points (100
+// points left out); closed, it stays.
+constexpr std::size_t kFineSpherePoints = 8000;
+constexpr std::size_t kCoarseSpherePoints = 100;
+
+const Case &coarse_beside_fine_case() {
+  static const Case c = [] {
+    Points p = sphere_random(kFineSpherePoints, 1.0, 61);
+    const Points coarse = fibonacci_sphere(kCoarseSpherePoints);
+    for (std::size_t i = 0; i < coarse.size(); ++i)
+      p.push_back(coarse[i] + (i % 3 == 0 ? 4 : 0));  // moved 4 along x
+    return make_case("a coarse sphere beside a fine one", p);
+  }();
+  return c;
+}
+
+// Two closed spheres of genus 0, every point of both used.
+std::string coarse_beside_fine_failure(const Case &c) {
+  const ContractReport &r = c.report;
+  if (r.components != 2 || r.closed_components != 2 || r.boundary_edges != 0 || r.genus_sum != 0)
+    return c.name + ": " + std::to_string(r.components) + " pieces (" +
+           std::to_string(r.closed_components) + " closed), " + std::to_string(r.boundary_edges) +
+           " boundary edges; expected two closed spheres";
+  if (r.vertices_used != kFineSpherePoints + kCoarseSpherePoints)
+    return c.name + ": " + std::to_string(r.vertices_used) + " points used of " +
+           std::to_string(kFineSpherePoints + kCoarseSpherePoints);
+  return "";
+}
+
 }  // namespace
 
 MOA_CONTRACT_TESTS(noisy_sphere)
@@ -344,6 +375,11 @@ static void test_overlap_torus_deterministic(void **) {
 }
 
 MOA_CONTRACT_TESTS(scattered_spheres)
+MOA_CONTRACT_TESTS(coarse_beside_fine)
+
+static void test_coarse_beside_fine_both_closed(void **) {
+  MOA_EXPECT(coarse_beside_fine_failure(coarse_beside_fine_case()));
+}
 
 static void test_scattered_spheres_each_closed(void **) {
   MOA_EXPECT(scattered_spheres_failure(scattered_spheres_case()));
@@ -383,6 +419,8 @@ int main(void) {
       cmocka_unit_test(test_overlap_torus_merged_and_closed),
       MOA_CONTRACT_ENTRIES(scattered_spheres),
       cmocka_unit_test(test_scattered_spheres_each_closed),
+      MOA_CONTRACT_ENTRIES(coarse_beside_fine),
+      cmocka_unit_test(test_coarse_beside_fine_both_closed),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
