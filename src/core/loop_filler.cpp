@@ -177,10 +177,11 @@ void LoopFiller::merge_loop_of(uint32_t vertex, uint32_t loop_id) {
   // The island's vertices count as this loop's from now on: every later triangle at one of
   // them would append its list again, and in a cloud of many islands the lists grew without
   // bound (a random volume of 50,000 points: 3 GB).
-  const std::vector<uint32_t> other = loops_[it->second].vertices;
+  const uint32_t island = it->second;  // `it` itself is one of the entries reassigned below
+  const std::vector<uint32_t> &other = loops_[island].vertices;
   for (uint32_t v : other) {
     auto at = loop_of_vertex_.find(v);
-    if (at != loop_of_vertex_.end() && at->second == it->second) at->second = loop_id;
+    if (at != loop_of_vertex_.end() && at->second == island) at->second = loop_id;
   }
   std::vector<uint32_t> &pool = loops_[loop_id].pool;
   pool.insert(pool.end(), other.begin(), other.end());
