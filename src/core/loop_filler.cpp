@@ -174,15 +174,11 @@ Verdict LoopFiller::clear_pinch_and_retry(const Tri &t) {
 void LoopFiller::merge_loop_of(uint32_t vertex, uint32_t loop_id) {
   auto it = loop_of_vertex_.find(vertex);
   if (it == loop_of_vertex_.end() || it->second == loop_id) return;
-  // The island's vertices count as this loop's from now on: every later triangle at one of
-  // them would append its list again, and in a cloud of many islands the lists grew without
-  // bound (a random volume of 50,000 points: 3 GB).
-  const uint32_t island = it->second;  // `it` itself is one of the entries reassigned below
-  const std::vector<uint32_t> &other = loops_[island].vertices;
-  for (uint32_t v : other) {
-    auto at = loop_of_vertex_.find(v);
-    if (at != loop_of_vertex_.end() && at->second == island) at->second = loop_id;
-  }
+  // Once for each island: every later triangle at one of its vertices appended its list
+  // again, and in a cloud of many islands the lists grew without bound (a random volume of
+  // 50,000 points: 3 GB).
+  if (!merged_.insert(uint64_t(loop_id) << 32 | it->second).second) return;
+  const std::vector<uint32_t> &other = loops_[it->second].vertices;
   std::vector<uint32_t> &pool = loops_[loop_id].pool;
   pool.insert(pool.end(), other.begin(), other.end());
 }

@@ -11,6 +11,7 @@
 #include <functional>
 #include <queue>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "core/growth_state.hpp"
@@ -132,6 +133,7 @@ class LoopFiller {
   std::vector<Loop> loops_;
   std::unordered_map<uint64_t, uint32_t> hole_loop_;       // hole edge -> its loop
   std::unordered_map<uint32_t, uint32_t> loop_of_vertex_;  // a vertex's (first) loop
+  std::unordered_set<uint64_t> merged_;  // (loop, island loop merged into it) pairs
   std::priority_queue<HoleEdge, std::vector<HoleEdge>, std::greater<HoleEdge>> queue_;
   std::vector<uint32_t> near_, sphere_;
   std::vector<Candidate> ranked_;

@@ -3,7 +3,7 @@
  * cloud. The loop module once appended an island's vertex list to the loop around it again for
  * every triangle that touched the island, and in such a cloud of countless islands the lists
  * grew without bound: this test's process then peaked at 112 MB (a 50,000-point cloud at
- * 3.1 GB), now at 54 MB. Measured on the process's peak resident size, so not built with the
+ * 3.1 GB), now at 56 MB. Measured on the process's peak resident size, so not built with the
  * sanitizers, whose shadow memory would dwarf it. */
 #include <stdarg.h>
 #include <stddef.h>
