@@ -301,6 +301,11 @@ void fill_loops(GrowthState &g, const std::function<void(double)> &tick) {
     g.stats.triangles_removed += removed;
     if (removed == 0) break;
   }
+  // What stays open may be a strip between two pieces whose loops each count as a border. A
+  // strip zipped in part leaves short holes between the triangles that passed: a fill round,
+  // then the patching below.
+  if (LoopFiller(g).zip_parallel_loops() > 0)
+    LoopFiller(g).run([&](double) { report(kRoundsShare); });
   // Stray pieces go before the patching (an island in a hole blocks its patch) and after it
   // (widening a hole can cut a piece off); their points join the others left out. Patching one
   // hole can free its neighbour (the faces a widened hole gave up were what blocked the
@@ -310,10 +315,8 @@ void fill_loops(GrowthState &g, const std::function<void(double)> &tick) {
   for (int round = 0; round < kPatchRounds && LoopFiller(g).patch_open_holes() > 0; ++round) {
   }
   report(0.85);
-  // What stays open may be a strip between two pieces whose loops each count as a border.
   // Pieces count as joined through a shared vertex, so the pinches go first: a stray piece
   // hanging from the surface by one vertex would be split off by finish_mesh, and stay.
-  LoopFiller(g).zip_parallel_loops();
   g.stats.triangles_removed += open_pinched_vertices(g);
   g.stats.triangles_removed += LoopFiller(g).drop_stray_pieces();
   // Closing holes beside a bridge across a narrow gap makes a handle of it: cut again. Before

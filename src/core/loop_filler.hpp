@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/growth_state.hpp"
+#include "core/kd_tree.hpp"
 
 namespace moa {
 
@@ -33,6 +34,15 @@ struct Loop {
   uint32_t piece = kNone;          // the component of the faces along it
   bool fillable = false;
   bool flat_cut = false;           // too wide, but lying in one cut of a contour stack (capped)
+};
+
+// Every vertex of the loops with its loop, in a kd-tree: which loops pass near a point
+// (zip_parallel_loops). A vertex on two loops is listed once for each.
+struct LoopVertices {
+  LoopVertices(const std::vector<Loop> &loops, const std::vector<Vec3> &work);
+  std::vector<Vec3> at;
+  std::vector<uint32_t> loop;
+  KdIndex index;  // over `at`, built last
 };
 
 struct HoleEdge {
@@ -124,7 +134,7 @@ class LoopFiller {
   std::vector<uint32_t> loop_around(const std::vector<uint32_t> &old, const std::vector<Tri> &rim);
 
   // loop_pieces.cpp
-  uint32_t partner_loop(uint32_t l) const;
+  uint32_t partner_loop(uint32_t l, const LoopVertices &near) const;
   std::vector<Tri> zipped_strip(const std::vector<uint32_t> &a,
                                 const std::vector<uint32_t> &b) const;
 

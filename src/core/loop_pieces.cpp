@@ -59,21 +59,49 @@ class Pieces {
   std::unordered_map<uint32_t, std::size_t> faces_;  // by piece: few pieces, one large
 };
 
+std::vector<Vec3> loop_points(const std::vector<Loop> &loops, const std::vector<Vec3> &work) {
+  std::vector<Vec3> at;
+  for (const Loop &loop : loops)
+    for (uint32_t v : loop.vertices) at.push_back(work[v]);
+  return at;
+}
+
+std::vector<uint32_t> loop_owners(const std::vector<Loop> &loops) {
+  std::vector<uint32_t> owner;
+  for (uint32_t l = 0; l < loops.size(); ++l)
+    owner.insert(owner.end(), loops[l].vertices.size(), l);
+  return owner;
+}
+
 }  // namespace
+
+LoopVertices::LoopVertices(const std::vector<Loop> &loops, const std::vector<Vec3> &work)
+    : at(loop_points(loops, work)), loop(loop_owners(loops)), index(at) {}
 
 // Two pieces that grew apart along a rim (a cylinder's cap and side, sampled on grids that
 // meet there) can leave a strip between them one cell wide, bounded by two loops each as
 // wide as the rim: borders by their width, though the hole is the strip. Such a pair (each
 // vertex of either loop within the hole width of the other loop, the loops on two pieces)
-// is closed by zipping the two loops together, if every triangle passes the judgment.
-// Returns the strips closed.
+// is closed by zipping the two loops together, with the triangles that pass the judgment.
+// Returns the strips zipped, whole or in part.
 std::size_t LoopFiller::zip_parallel_loops() {
   collect_hole_edges();
   loops_ = trace_loops();
   classify_and_pool();
+  if (loops_.size() < 2) return 0;
+  // The pieces as the live faces join them now: an orientation component never splits, and
+  // the two halves of a stack cut apart along a slice can share one through faces removed
+  // since.
+  const Pieces pieces(g_.mesh, g_.points.size());
+  for (Loop &loop : loops_) {
+    uint32_t fs[2];
+    g_.mesh.edge_faces(loop.vertices[1 % loop.vertices.size()], loop.vertices[0], fs);
+    loop.piece = pieces.of(fs[0]);
+  }
+  const LoopVertices near(loops_, g_.points.work);
   std::vector<uint32_t> partner(loops_.size(), kNone);
   for (uint32_t l = 0; l < loops_.size(); ++l)
-    if (!loops_[l].fillable) partner[l] = partner_loop(l);
+    if (!loops_[l].fillable) partner[l] = partner_loop(l, near);
   std::size_t zipped = 0;
   for (uint32_t l = 0; l < loops_.size(); ++l) {
     const uint32_t p = partner[l];
@@ -85,34 +113,49 @@ std::size_t LoopFiller::zip_parallel_loops() {
     if (done) {
       g_.stats.triangles_loops += strip.size();
       ++zipped;
+      continue;
     }
+    // Where a loop zigzags (a vertex of the rim standing out of its slice), the straight zip
+    // folds; the triangles that pass are kept, and the short holes left between them are
+    // narrow, for the fill round that follows (fill_loops).
+    std::size_t added = 0;
+    for (const Tri &t : strip) added += g_.add_all_or_none({t});
+    g_.stats.triangles_loops += added;
+    zipped += added > 0;
   }
   return zipped;
 }
 
-// The loop of another piece that every vertex of loop l has among its neighbours within the
-// hole width; kNone if there is none.
-uint32_t LoopFiller::partner_loop(uint32_t l) const {
+// The loop of another piece that has a vertex within the hole width of every vertex of loop
+// l, the nearest to l's first vertex if several do; kNone if there is none. Searched by
+// distance among the loops' vertices, not in the neighbour lists: across a gap between two
+// slices of a CT stack a point's list may hold its own slice and the next one on its side
+// alone, none of the loop across.
+uint32_t LoopFiller::partner_loop(uint32_t l, const LoopVertices &near) const {
   const auto &w = g_.points.work;
   const std::vector<uint32_t> &loop = loops_[l].vertices;
   const double reach2 = loops_[l].hole_width * loops_[l].hole_width;
   uint32_t partner = kNone;
+  std::vector<std::pair<uint32_t, double>> found;
   for (uint32_t v : loop) {
-    bool beside = false;
-    const uint32_t *nb = g_.nb.of(v);
-    for (unsigned j = 0; j < g_.nb.k && !beside; ++j) {
-      const uint32_t x = nb[j];
-      if (norm2(w[x] - w[v]) > reach2) break;  // the list runs nearest first
-      const auto it = loop_of_vertex_.find(x);
-      if (it == loop_of_vertex_.end() || it->second == l) continue;
-      if (partner == kNone) {
-        const FacesAround around = g_.mesh.faces_at(x);
-        if (around.empty() || g_.mesh.component(around.front()) == loops_[l].piece) continue;
-        partner = it->second;
+    near.index.within(w[v], reach2, found);
+    if (partner == kNone) {
+      double nearest = reach2;
+      for (const auto &[i, d2] : found) {
+        const uint32_t other = near.loop[i];
+        if (other == l || loops_[other].piece == loops_[l].piece) continue;
+        if (d2 < nearest || (d2 == nearest && other < partner)) {
+          nearest = d2;
+          partner = other;
+        }
       }
-      beside = it->second == partner;
+      if (partner == kNone) return kNone;
+      continue;
     }
-    if (!beside) return kNone;
+    if (std::none_of(found.begin(), found.end(), [&](const std::pair<uint32_t, double> &f) {
+          return near.loop[f.first] == partner;
+        }))
+      return kNone;
   }
   return partner;
 }

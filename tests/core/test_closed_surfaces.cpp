@@ -262,6 +262,37 @@ const Case &dense_cylinder_contour_stack_case() {
   return c;
 }
 
+// Marching-cubes vertices of a segmented CT volume, slices four times farther apart than the
+// voxels in them (grid 96 x 96 x 24 over [-1, 1]^3). Where the surface runs across the slices
+// the only points are on the slices' contours, and two pieces grew apart along the gap
+// between two contours: the neighbour lists of the contours' points, filled by their own
+// contour and the next one on their side, held none of the contour across, so the pieces'
+// loops were not found side by side (torus: 936 boundary edges in 2 pieces; bumpy ellipsoid:
+// 532 in 2).
+const int kCtGrid[3] = {96, 96, 24};
+
+double ct_torus(double x, double y, double z) {
+  const double ring = std::sqrt(x * x + y * y) - 0.6;
+  return ring * ring + z * z - 0.25 * 0.25;
+}
+
+double ct_organ(double x, double y, double z) {
+  return (x / 0.9) * (x / 0.9) + (y / 0.5) * (y / 0.5) + (z / 0.4) * (z / 0.4) - 1 +
+         0.08 * std::sin(7 * x) * std::cos(5 * y);
+}
+
+const Case &ct_torus_case() {
+  static const Case c = make_case("torus, marching-cubes vertices of a CT stack",
+                                  shuffled(marching_cubes_vertices(ct_torus, kCtGrid), 71));
+  return c;
+}
+
+const Case &ct_organ_case() {
+  static const Case c = make_case("bumpy ellipsoid, marching-cubes vertices of a CT stack",
+                                  shuffled(marching_cubes_vertices(ct_organ, kCtGrid), 73));
+  return c;
+}
+
 }  // namespace
 
 MOA_CONTRACT_TESTS(fibonacci_sphere)
@@ -287,6 +318,8 @@ MOA_CONTRACT_TESTS(fine_contour_stack)
 MOA_CONTRACT_TESTS(sphere_contour_stack)
 MOA_CONTRACT_TESTS(cylinder_contour_stack)
 MOA_CONTRACT_TESTS(dense_cylinder_contour_stack)
+MOA_CONTRACT_TESTS(ct_torus)
+MOA_CONTRACT_TESTS(ct_organ)
 
 static void test_fibonacci_sphere_closed_genus0(void **) { MOA_EXPECT(closed_failure(fibonacci_sphere_case(), 0)); }
 static void test_random_sphere_closed_genus0(void **) { MOA_EXPECT(closed_failure(random_sphere_case(), 0)); }
@@ -354,6 +387,19 @@ static void test_cylinder_contour_stack_closed_genus0(void **) {
 static void test_dense_cylinder_contour_stack_closed_genus0(void **) {
   MOA_EXPECT(closed_failure(dense_cylinder_contour_stack_case(), 0));
 }
+// The torus: its halves joined in one piece, the strips at its equators closed but for a few
+// folds where a contour zigzags (38 boundary edges in one loop; on the same cloud in another
+// order, closed with genus 1).
+static void test_ct_torus_joined(void **) {
+  const Case &c = ct_torus_case();
+  const ContractReport &r = c.report;
+  std::string failure;
+  if (r.components != 1 || r.boundary_edges > 60)
+    failure = c.name + ": " + std::to_string(r.components) + " pieces, " +
+              std::to_string(r.boundary_edges) + " boundary edges; expected 1 piece, at most 60";
+  MOA_EXPECT(failure);
+}
+static void test_ct_organ_closed_genus0(void **) { MOA_EXPECT(closed_failure(ct_organ_case(), 0)); }
 
 // Near the poles of a contour stack the next cut can lie farther than a list reaches along a
 // point's own cut: every list must still hold a point of another cut (neighbors.cpp), or the
@@ -415,6 +461,10 @@ int main(void) {
       cmocka_unit_test(test_cylinder_contour_stack_closed_genus0),
       MOA_CONTRACT_ENTRIES(dense_cylinder_contour_stack),
       cmocka_unit_test(test_dense_cylinder_contour_stack_closed_genus0),
+      MOA_CONTRACT_ENTRIES(ct_torus),
+      cmocka_unit_test(test_ct_torus_joined),
+      MOA_CONTRACT_ENTRIES(ct_organ),
+      cmocka_unit_test(test_ct_organ_closed_genus0),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

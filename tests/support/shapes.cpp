@@ -455,6 +455,28 @@ Points torus_contour_stack(double per_gap) {
                        per_gap, 1);
 }
 
+Points marching_cubes_vertices(double (*f)(double x, double y, double z), const int n[3]) {
+  auto coordinate = [&](int axis, int i) { return -1.0 + 2.0 * double(i) / double(n[axis] - 1); };
+  Points p;
+  for (int i = 0; i < n[0]; ++i)
+    for (int j = 0; j < n[1]; ++j)
+      for (int k = 0; k < n[2]; ++k) {
+        const double at[3] = {coordinate(0, i), coordinate(1, j), coordinate(2, k)};
+        const double here = f(at[0], at[1], at[2]);
+        const int cell[3] = {i, j, k};
+        for (int axis = 0; axis < 3; ++axis) {  // the edge from here along `axis`
+          if (cell[axis] + 1 >= n[axis]) continue;
+          double next_at[3] = {at[0], at[1], at[2]};
+          next_at[axis] = coordinate(axis, cell[axis] + 1);
+          const double next = f(next_at[0], next_at[1], next_at[2]);
+          if ((here < 0) == (next < 0)) continue;
+          const double t = here / (here - next);
+          for (int c = 0; c < 3; ++c) p.push_back(at[c] + (next_at[c] - at[c]) * t);
+        }
+      }
+  return p;
+}
+
 namespace {
 
 // Circles round the axis (1, 0.3, 0.2) at the middles of `slices` even bands of heights -1 to 1,

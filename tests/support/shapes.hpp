@@ -90,6 +90,11 @@ Points sphere_contour_stack(std::size_t slices, double per_gap, std::uint64_t se
 // A cylinder of radius 1 round the same axis, 2 long, cut the same way: its flat ends lie
 // beyond the first and last circles and get no points.
 Points cylinder_contour_stack(std::size_t slices, double per_gap, std::uint64_t seed);
+// The vertices marching cubes puts on the surface f = 0 of a segmented CT or MRI volume: the
+// point where f, linear along each edge of an n[0] x n[1] x n[2] grid over the cube [-1, 1]^3,
+// changes sign. With n[2] below n[0] and n[1], slices lie farther apart than the voxels in
+// them, as in most CT scans.
+Points marching_cubes_vertices(double (*f)(double x, double y, double z), const int n[3]);
 // Greedy blue-noise thinning: keeps candidates (in order) at least min_distance from all kept.
 Points thin_points(const Points &candidates, double min_distance);
 
