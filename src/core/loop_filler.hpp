@@ -135,8 +135,8 @@ class LoopFiller {
 
   // loop_pieces.cpp
   uint32_t partner_loop(uint32_t l, const LoopVertices &near) const;
-  std::vector<Tri> zipped_strip(const std::vector<uint32_t> &a,
-                                const std::vector<uint32_t> &b) const;
+  std::vector<Tri> zipped_strip(const std::vector<uint32_t> &a, const std::vector<uint32_t> &b,
+                                bool by_share) const;
 
   GrowthState &g_;
   std::unordered_map<uint32_t, std::vector<uint32_t>> out_;  // the hole edges leaving a vertex

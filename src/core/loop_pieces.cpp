@@ -106,20 +106,30 @@ std::size_t LoopFiller::zip_parallel_loops() {
   for (uint32_t l = 0; l < loops_.size(); ++l) {
     const uint32_t p = partner[l];
     if (p == kNone || p < l || partner[p] != l) continue;
-    const std::vector<Tri> strip = zipped_strip(loops_[l].vertices, loops_[p].vertices);
     bool done = false;
-    for (bool layers_allowed : {false, true})
-      if (!done) done = g_.add_all_or_none(strip, layers_allowed);
+    std::vector<Tri> strip;
+    for (bool by_share : {false, true}) {
+      strip = zipped_strip(loops_[l].vertices, loops_[p].vertices, by_share);
+      for (bool layers_allowed : {false, true})
+        if (!done) done = g_.add_all_or_none(strip, layers_allowed);
+      if (done) break;
+    }
     if (done) {
       g_.stats.triangles_loops += strip.size();
       ++zipped;
       continue;
     }
-    // Where a loop zigzags (a vertex of the rim standing out of its slice), the straight zip
-    // folds; the triangles that pass are kept, and the short holes left between them are
-    // narrow, for the fill round that follows (fill_loops).
+    // Where a loop zigzags (a vertex of the rim standing out of its slice), the zip folds; the
+    // triangles that pass are kept, and the short holes left between them are narrow, for the
+    // fill round that follows (fill_loops). Only triangles across the strip: the relaxed
+    // judgment would let one pass that reaches across a torus's hole.
+    const double reach2 = loops_[l].hole_width * loops_[l].hole_width;
+    const auto &w = g_.points.work;
     std::size_t added = 0;
-    for (const Tri &t : strip) added += g_.add_all_or_none({t});
+    for (const Tri &t : strip)
+      if (norm2(w[t[0]] - w[t[1]]) <= reach2 && norm2(w[t[1]] - w[t[2]]) <= reach2 &&
+          norm2(w[t[2]] - w[t[0]]) <= reach2)
+        added += g_.add_all_or_none({t});
     g_.stats.triangles_loops += added;
     zipped += added > 0;
   }
@@ -162,11 +172,14 @@ uint32_t LoopFiller::partner_loop(uint32_t l, const LoopVertices &near) const {
 
 // The triangles of the strip between loops a and b, oriented as a's piece is: from a's first
 // vertex and the vertex of b nearest it, each step adds the triangle whose new side across
-// the strip is the shorter, walking along b the way that keeps beside a. The loops of two
+// the strip is the shorter, or (by_share) the one whose new vertex comes first by its share of
+// its loop's length, walking along b the way that keeps beside a. By the shorter side a vertex
+// of one loop standing out of the strip can stall the walk, every later step fanning the other
+// loop from the vertex before it; shares pass such a vertex by. The loops of two
 // pieces facing the same way run opposite ways round the strip; where they run the same
 // way, b's piece faces the other way and turns round when the strip joins it.
 std::vector<Tri> LoopFiller::zipped_strip(const std::vector<uint32_t> &a,
-                                          const std::vector<uint32_t> &b) const {
+                                          const std::vector<uint32_t> &b, bool by_share) const {
   const auto &w = g_.points.work;
   const std::size_t n = a.size(), m = b.size();
   std::size_t start = 0;
@@ -178,12 +191,22 @@ std::vector<Tri> LoopFiller::zipped_strip(const std::vector<uint32_t> &a,
     steps %= m;
     return b[forward ? (start + steps) % m : (start + m - steps) % m];
   };
+  // Each loop's vertices at their share of its length from the start, for by_share.
+  std::vector<double> share_a(n + 1, 0.0), share_b(m + 1, 0.0);
+  for (std::size_t i = 0; i < n; ++i)
+    share_a[i + 1] = share_a[i] + dist(w[a[i]], w[a[(i + 1) % n]]);
+  for (std::size_t j = 0; j < m; ++j)
+    share_b[j + 1] = share_b[j] + dist(w[b_at(j)], w[b_at(j + 1)]);
+  for (double &x : share_a) x /= std::max(share_a[n], 1e-300);
+  for (double &x : share_b) x /= std::max(share_b[m], 1e-300);
   std::vector<Tri> strip;
   std::size_t i = 0, j = 0;  // steps taken along a and along b
   while (i < n || j < m) {
     const uint32_t ai = a[i % n], bj = b_at(j);
     const uint32_t a_next = a[(i + 1) % n], b_next = b_at(j + 1);
-    const bool along_a = j == m || (i < n && norm2(w[a_next] - w[bj]) <= norm2(w[ai] - w[b_next]));
+    const bool along_a =
+        j == m || (i < n && (by_share ? share_a[i + 1] <= share_b[j + 1]
+                                      : norm2(w[a_next] - w[bj]) <= norm2(w[ai] - w[b_next])));
     if (along_a) {
       strip.push_back({ai, a_next, bj});
       ++i;

@@ -267,8 +267,9 @@ const Case &dense_cylinder_contour_stack_case() {
 // the only points are on the slices' contours, and two pieces grew apart along the gap
 // between two contours: the neighbour lists of the contours' points, filled by their own
 // contour and the next one on their side, held none of the contour across, so the pieces'
-// loops were not found side by side (torus: 936 boundary edges in 2 pieces; bumpy ellipsoid:
-// 532 in 2).
+// loops were not found side by side (torus: 934 boundary edges in 2 pieces; bumpy ellipsoid:
+// 532 in 2). On the torus the zip by the shorter side across then stalled at a vertex of one
+// contour standing out of its slice, and what was zipped in part left 38 boundary edges.
 const int kCtGrid[3] = {96, 96, 24};
 
 double ct_torus(double x, double y, double z) {
@@ -387,18 +388,7 @@ static void test_cylinder_contour_stack_closed_genus0(void **) {
 static void test_dense_cylinder_contour_stack_closed_genus0(void **) {
   MOA_EXPECT(closed_failure(dense_cylinder_contour_stack_case(), 0));
 }
-// The torus: its halves joined in one piece, the strips at its equators closed but for a few
-// folds where a contour zigzags (38 boundary edges in one loop; on the same cloud in another
-// order, closed with genus 1).
-static void test_ct_torus_joined(void **) {
-  const Case &c = ct_torus_case();
-  const ContractReport &r = c.report;
-  std::string failure;
-  if (r.components != 1 || r.boundary_edges > 60)
-    failure = c.name + ": " + std::to_string(r.components) + " pieces, " +
-              std::to_string(r.boundary_edges) + " boundary edges; expected 1 piece, at most 60";
-  MOA_EXPECT(failure);
-}
+static void test_ct_torus_closed_genus1(void **) { MOA_EXPECT(closed_failure(ct_torus_case(), 1)); }
 static void test_ct_organ_closed_genus0(void **) { MOA_EXPECT(closed_failure(ct_organ_case(), 0)); }
 
 // Near the poles of a contour stack the next cut can lie farther than a list reaches along a
@@ -462,7 +452,7 @@ int main(void) {
       MOA_CONTRACT_ENTRIES(dense_cylinder_contour_stack),
       cmocka_unit_test(test_dense_cylinder_contour_stack_closed_genus0),
       MOA_CONTRACT_ENTRIES(ct_torus),
-      cmocka_unit_test(test_ct_torus_joined),
+      cmocka_unit_test(test_ct_torus_closed_genus1),
       MOA_CONTRACT_ENTRIES(ct_organ),
       cmocka_unit_test(test_ct_organ_closed_genus0),
   };
