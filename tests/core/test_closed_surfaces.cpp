@@ -288,6 +288,18 @@ const Case &ct_torus_case() {
   return c;
 }
 
+// Slices six times farther apart (96 x 96 x 16): the contours on either side of the gap at the
+// torus's equators lie 6-7 spacings apart, beyond the hole width; two loops running side by
+// side along their whole length are zipped up to twice that (912 boundary edges in 2 pieces
+// before).
+const int kCoarseCtGrid[3] = {96, 96, 16};
+
+const Case &ct_coarse_torus_case() {
+  static const Case c = make_case("torus, marching-cubes vertices of a coarse CT stack",
+                                  shuffled(marching_cubes_vertices(ct_torus, kCoarseCtGrid), 79));
+  return c;
+}
+
 const Case &ct_organ_case() {
   static const Case c = make_case("bumpy ellipsoid, marching-cubes vertices of a CT stack",
                                   shuffled(marching_cubes_vertices(ct_organ, kCtGrid), 73));
@@ -321,6 +333,7 @@ MOA_CONTRACT_TESTS(cylinder_contour_stack)
 MOA_CONTRACT_TESTS(dense_cylinder_contour_stack)
 MOA_CONTRACT_TESTS(ct_torus)
 MOA_CONTRACT_TESTS(ct_organ)
+MOA_CONTRACT_TESTS(ct_coarse_torus)
 
 static void test_fibonacci_sphere_closed_genus0(void **) { MOA_EXPECT(closed_failure(fibonacci_sphere_case(), 0)); }
 static void test_random_sphere_closed_genus0(void **) { MOA_EXPECT(closed_failure(random_sphere_case(), 0)); }
@@ -390,6 +403,9 @@ static void test_dense_cylinder_contour_stack_closed_genus0(void **) {
 }
 static void test_ct_torus_closed_genus1(void **) { MOA_EXPECT(closed_failure(ct_torus_case(), 1)); }
 static void test_ct_organ_closed_genus0(void **) { MOA_EXPECT(closed_failure(ct_organ_case(), 0)); }
+static void test_ct_coarse_torus_closed_genus1(void **) {
+  MOA_EXPECT(closed_failure(ct_coarse_torus_case(), 1));
+}
 
 // Near the poles of a contour stack the next cut can lie farther than a list reaches along a
 // point's own cut: every list must still hold a point of another cut (neighbors.cpp), or the
@@ -455,6 +471,8 @@ int main(void) {
       cmocka_unit_test(test_ct_torus_closed_genus1),
       MOA_CONTRACT_ENTRIES(ct_organ),
       cmocka_unit_test(test_ct_organ_closed_genus0),
+      MOA_CONTRACT_ENTRIES(ct_coarse_torus),
+      cmocka_unit_test(test_ct_coarse_torus_closed_genus1),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
