@@ -33,7 +33,7 @@ struct Loop {
   double hole_width = 0;           // hole_size times the mean spacing of its vertices
   uint32_t piece = kNone;          // the component of the faces along it
   bool fillable = false;
-  bool flat_cut = false;           // too wide, but lying in one cut of a contour stack (capped)
+  bool flat_cut = false;  // too wide, but lying in one cut of a contour stack (capped)
 };
 
 // Every vertex of the loops with its loop, in a kd-tree: which loops pass near a point
@@ -95,6 +95,8 @@ class LoopFiller {
   uint32_t pick_next(uint32_t u, uint32_t v, std::vector<uint32_t> &outs);
   std::vector<Loop> trace_loops(const std::vector<uint32_t> *from = nullptr);
   double loop_width(const std::vector<uint32_t> &loop) const;
+  // The face along the loop's first edge (from its second vertex to its first).
+  uint32_t face_along(const std::vector<uint32_t> &loop) const;
   double widest_waist(const std::vector<uint32_t> &loop) const;
   bool bends(const std::vector<uint32_t> &loop) const;
   bool in_one_cut(const std::vector<uint32_t> &loop, double spacing) const;

@@ -93,7 +93,7 @@ LoopVertices::LoopVertices(const std::vector<Loop> &loops, const std::vector<Vec
 // Two pieces that grew apart along a rim (a cylinder's cap and side, sampled on grids that
 // meet there) can leave a strip between them one cell wide, bounded by two loops each as
 // wide as the rim: borders by their width, though the hole is the strip. Such a pair (each
-// vertex of either loop within the hole width of the other loop, the loops on two pieces)
+// vertex of either loop within twice the hole width of the other loop, the loops on two pieces)
 // is closed by zipping the two loops together, with the triangles that pass the judgment.
 // Returns the strips zipped, whole or in part.
 std::size_t LoopFiller::zip_parallel_loops() {
@@ -105,11 +105,7 @@ std::size_t LoopFiller::zip_parallel_loops() {
   // the two halves of a stack cut apart along a slice can share one through faces removed
   // since.
   const Pieces pieces(g_.mesh, g_.points.size());
-  for (Loop &loop : loops_) {
-    uint32_t fs[2];
-    g_.mesh.edge_faces(loop.vertices[1 % loop.vertices.size()], loop.vertices[0], fs);
-    loop.piece = pieces.of(fs[0]);
-  }
+  for (Loop &loop : loops_) loop.piece = pieces.of(face_along(loop.vertices));
   const LoopVertices near(loops_, g_.points.work);
   std::vector<uint32_t> partner(loops_.size(), kNone);
   for (uint32_t l = 0; l < loops_.size(); ++l)
@@ -148,9 +144,9 @@ std::size_t LoopFiller::zip_parallel_loops() {
   return zipped;
 }
 
-// The loop of another piece that has a vertex within the hole width of every vertex of loop
-// l, the nearest to l's first vertex if several do; kNone if there is none. Searched by
-// distance among the loops' vertices, not in the neighbour lists: across a gap between two
+// The loop of another piece that has a vertex within twice the hole width (kZipReach) of every
+// vertex of loop l, the nearest to l's first vertex if several do; kNone if there is none. Searched
+// by distance among the loops' vertices, not in the neighbour lists: across a gap between two
 // slices of a CT stack a point's list may hold its own slice and the next one on its side
 // alone, none of the loop across.
 uint32_t LoopFiller::partner_loop(uint32_t l, const LoopVertices &near) const {
@@ -203,14 +199,18 @@ std::vector<Tri> LoopFiller::zipped_strip(const std::vector<uint32_t> &a,
     steps %= m;
     return b[forward ? (start + steps) % m : (start + m - steps) % m];
   };
-  // Each loop's vertices at their share of its length from the start, for by_share.
-  std::vector<double> share_a(n + 1, 0.0), share_b(m + 1, 0.0);
-  for (std::size_t i = 0; i < n; ++i)
-    share_a[i + 1] = share_a[i] + dist(w[a[i]], w[a[(i + 1) % n]]);
-  for (std::size_t j = 0; j < m; ++j)
-    share_b[j + 1] = share_b[j] + dist(w[b_at(j)], w[b_at(j + 1)]);
-  for (double &x : share_a) x /= std::max(share_a[n], 1e-300);
-  for (double &x : share_b) x /= std::max(share_b[m], 1e-300);
+  // Each loop's vertices at their share of its length from the start, for by_share only.
+  std::vector<double> share_a, share_b;
+  if (by_share) {
+    share_a.assign(n + 1, 0.0);
+    share_b.assign(m + 1, 0.0);
+    for (std::size_t i = 0; i < n; ++i)
+      share_a[i + 1] = share_a[i] + dist(w[a[i]], w[a[(i + 1) % n]]);
+    for (std::size_t j = 0; j < m; ++j)
+      share_b[j + 1] = share_b[j] + dist(w[b_at(j)], w[b_at(j + 1)]);
+    for (double &x : share_a) x /= std::max(share_a[n], 1e-300);
+    for (double &x : share_b) x /= std::max(share_b[m], 1e-300);
+  }
   std::vector<Tri> strip;
   std::size_t i = 0, j = 0;  // steps taken along a and along b
   while (i < n || j < m) {

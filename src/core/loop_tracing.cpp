@@ -182,6 +182,12 @@ double LoopFiller::loop_width(const std::vector<uint32_t> &loop) const {
 // torn open along a sharp edge has waists as narrow as the strip, however long it is, where
 // loop_width sees its length from the vertices near its ends. Vertices with no such j (the
 // tip of a wedge) have no waist.
+uint32_t LoopFiller::face_along(const std::vector<uint32_t> &loop) const {
+  uint32_t fs[2];
+  g_.mesh.edge_faces(loop[1 % loop.size()], loop[0], fs);
+  return fs[0];
+}
+
 double LoopFiller::widest_waist(const std::vector<uint32_t> &loop) const {
   const auto &w = g_.points.work;
   const std::size_t n = loop.size();
@@ -295,9 +301,7 @@ void LoopFiller::classify_and_pool() {
     spacing /= double(n);
     const double width = loop_width(loop.vertices);
     const double hole_width = loop.hole_width = g_.params.hole_size * spacing;
-    uint32_t fs[2];
-    g_.mesh.edge_faces(loop.vertices[1 % n], loop.vertices[0], fs);
-    loop.piece = g_.mesh.component(fs[0]);
+    loop.piece = g_.mesh.component(face_along(loop.vertices));
     // Narrow, or else small; a strip is narrow by its waists too, the spacing capped where
     // the loop runs among stray points: their own spacing would make a gap of any width among
     // them look narrow. The dearer tests come last: the waists take a quadratic number of
