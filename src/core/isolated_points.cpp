@@ -54,6 +54,19 @@ constexpr double kOffPlane = 0.5;
 constexpr double kVolumeSparse = 5.0;
 constexpr unsigned kVolumeNeighbors = 10;
 constexpr double kVolumeThickness = 0.45;
+// A cloud cluttered with stray points through its volume: the more of them, the denser they
+// are, down to 2.5-4 times the surface's spacing in the median at one stray point per surface
+// point, and the cloud's median spacing rises towards theirs. There the test is against the
+// median spacing of the points whose neighbourhoods are flat (the surface's) and
+// kClutterSparse times it. A cloud is cluttered when over kClutterShare of a sample of its points
+// (kClutterSample, evenly through the cloud) pass that test: on 291 clouds without stray points
+// (samples, vertex sets, density gradients, noise, thin plates and pipes, CT stacks, scans) at
+// most 0.9 % do (the sparse end of a 30-to-1 gradient), on clouds with 20-100 % stray points in
+// the volume 13-43 %. Left in, 10,000 stray points through the box of a 20,000-point bunny cost
+// the loop module 9 s of a 10 s run, widening and filling among the faces spanned between them.
+constexpr double kClutterSparse = 2.5;
+constexpr double kClutterShare = 0.05;
+constexpr std::size_t kClutterSample = 20000;
 
 // Whether point i stands alone, the points already marked left out of its list. `kept` and
 // `around` are scratch space.
@@ -93,12 +106,48 @@ bool stands_alone(const std::vector<Vec3> &w, const Neighborhood &nb,
   return std::fabs(dot(w[i] - plane.centroid, plane.axis[0])) > kOffPlane * own;
 }
 
-// Whether point i is a stray point in the volume (kVolumeSparse); `typical` is the cloud's
-// median spacing.
-bool in_the_volume(const std::vector<Vec3> &w, const Neighborhood &nb, uint32_t i, double typical) {
-  if (double(nb.spacing[i]) <= kVolumeSparse * typical) return false;
-  const PcaFrame f = pca_frame(w, i, nb.of(i), std::min(nb.k, kVolumeNeighbors));
-  return flatness_ratio(f) > kVolumeThickness;
+// The spread of point i's nearest neighbours: thickness over width (flatness_ratio).
+double thickness(const std::vector<Vec3> &w, const Neighborhood &nb, uint32_t i) {
+  return flatness_ratio(pca_frame(w, i, nb.of(i), std::min(nb.k, kVolumeNeighbors)));
+}
+
+// A point in the volume is sparser than `reference` times `sparse` and spread in three
+// dimensions.
+struct VolumeTest {
+  double reference;
+  double sparse;
+};
+
+// The test for stray points in the volume: against the cloud's median spacing (`typical`) and
+// kVolumeSparse, or in a cluttered cloud against the flat points' median and kClutterSparse.
+VolumeTest volume_test(const std::vector<Vec3> &w, const Neighborhood &nb, double typical) {
+  const std::size_t n = w.size(), step = std::max<std::size_t>(1, n / kClutterSample);
+  const std::size_t count = (n + step - 1) / step;
+  std::vector<float> spread(count);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 256),
+                    [&](const tbb::blocked_range<std::size_t> &r) {
+                      for (std::size_t s = r.begin(); s != r.end(); ++s)
+                        spread[s] = float(thickness(w, nb, uint32_t(s * step)));
+                    });
+  std::vector<float> flat;
+  for (std::size_t s = 0; s < count; ++s)
+    if (spread[s] <= kVolumeThickness) flat.push_back(nb.spacing[s * step]);
+  // A cloud with hardly any flat neighbourhood has no surface to measure against.
+  if (flat.size() < count / 4) return {typical, kVolumeSparse};
+  std::nth_element(flat.begin(), flat.begin() + std::ptrdiff_t(flat.size() / 2), flat.end());
+  const double surface = std::max(1e-9, double(flat[flat.size() / 2]));
+  std::size_t sparse = 0;
+  for (std::size_t s = 0; s < count; ++s)
+    sparse += spread[s] > kVolumeThickness && nb.spacing[s * step] > kClutterSparse * surface;
+  if (double(sparse) > kClutterShare * double(count)) return {surface, kClutterSparse};
+  return {typical, kVolumeSparse};
+}
+
+// Whether point i is a stray point in the volume.
+bool in_the_volume(const std::vector<Vec3> &w, const Neighborhood &nb, uint32_t i,
+                   const VolumeTest &test) {
+  if (double(nb.spacing[i]) <= test.sparse * test.reference) return false;
+  return thickness(w, nb, i) > kVolumeThickness;
 }
 
 }  // namespace
@@ -110,11 +159,11 @@ void mark_isolated_points(const PointSet &points, Neighborhood &nb) {
   if (nb.lined || nb.k < 4) return;
   const std::size_t n = points.size();
   std::vector<uint8_t> isolated(n, 0), next(n, 0);
-  const double typical = median_spacing(nb);
+  const VolumeTest test = volume_test(points.work, nb, median_spacing(nb));
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1024),
                     [&](const tbb::blocked_range<std::size_t> &r) {
                       for (std::size_t i = r.begin(); i != r.end(); ++i)
-                        if (in_the_volume(points.work, nb, uint32_t(i), typical))
+                        if (in_the_volume(points.work, nb, uint32_t(i), test))
                           isolated[i] = kInTheVolume;
                     });
   for (int round = 0; round < kRounds; ++round) {

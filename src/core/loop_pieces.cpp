@@ -17,7 +17,11 @@ namespace {
 // up to 370 faces with edges ten spacings long).
 // A piece of at most kMaxSparseFaces faces counts as sparse from kTinySparseSpacings on: a
 // bubble of 8-42 faces that stray points deep in the volume closed among themselves had median
-// edges of 2.9-4.2 spacings (10,000-20,000-point samples with 10-20 % stray points).
+// edges of 2.9-4.2 spacings (10,000-20,000-point samples with 10-20 % stray points). It counts
+// as sparse too when its corners list more stray points of the volume (isolated_points.hpp)
+// than other points: a clump of stray points close enough together to pass for a surface (in a
+// cube holding as many stray points as the torus in it has points, bubbles of 9 and 18 faces
+// 17-34 spacings off the torus, their median edges 2.3 spacings).
 // A closed piece of more than kMaxSparseFaces faces stays however sparse: a small object
 // sampled far more coarsely than the rest of the cloud (a sphere of 100 points beside one of
 // 20,000), which was dropped whole. The pieces that stray points spanned among themselves and
@@ -257,6 +261,7 @@ std::size_t LoopFiller::drop_stray_pieces(bool layers) {
   std::vector<double> edges;
   for (const auto &[piece, faces] : small) {
     bool on_other = true, closed = true;
+    std::size_t strays_listed = 0, others_listed = 0;  // in the corners' lists
     edges.clear();
     for (uint32_t f : faces) {
       const Tri &t = g_.mesh.stored(f);
@@ -269,6 +274,12 @@ std::size_t LoopFiller::drop_stray_pieces(bool layers) {
         const uint32_t v = t[i];
         const uint32_t *nb = g_.nb.of(v);
         bool near = false;
+        for (unsigned j = 0; j < g_.nb.k; ++j) {
+          if (g_.nb.in_the_volume(nb[j]))
+            ++strays_listed;
+          else
+            ++others_listed;
+        }
         for (unsigned j = 0; j < g_.nb.k && !near; ++j) {
           const FacesAround around = g_.mesh.faces_at(nb[j]);
           near = !around.empty() && pieces.of(around.front()) != piece &&
@@ -283,7 +294,8 @@ std::size_t LoopFiller::drop_stray_pieces(bool layers) {
     const double median_edge = edges[edges.size() / 2];
     const bool sparse =
         (median_edge > sparse_edge && !(closed && faces.size() > kMaxSparseFaces)) ||
-        (faces.size() <= kMaxSparseFaces && median_edge > kTinySparseSpacings * g_.spacing);
+        (faces.size() <= kMaxSparseFaces && (median_edge > kTinySparseSpacings * g_.spacing ||
+                                             strays_listed > others_listed));
     if (!layer && !sparse) continue;
     for (uint32_t f : faces) g_.mesh.remove(f);
     removed += faces.size();

@@ -306,7 +306,15 @@ bool on_a_line(double spacing, double across_gap) {
 }
 
 double median_spacing(const Neighborhood &nb) {
-  std::vector<float> s(nb.spacing);
+  std::vector<float> s;
+  if (nb.isolated.empty()) {
+    s = nb.spacing;
+  } else {
+    s.reserve(nb.spacing.size());
+    for (uint32_t i = 0; i < nb.spacing.size(); ++i)
+      if (!nb.alone(i)) s.push_back(nb.spacing[i]);
+    if (s.empty()) s = nb.spacing;
+  }
   std::nth_element(s.begin(), s.begin() + std::ptrdiff_t(s.size() / 2), s.end());
   return std::max(1e-9, double(s[s.size() / 2]));
 }

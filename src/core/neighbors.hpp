@@ -67,7 +67,9 @@ LineMeasure measure_line(const std::vector<Vec3> &p, uint32_t i, const uint32_t 
 // would raise the spacing).
 bool on_a_line(double spacing, double across_gap);
 
-// The median of the points' spacings (work units), never zero.
+// The median of the points' spacings (work units), never zero; stray points, once marked
+// (isolated_points.hpp), left out: in a cloud with as many stray points as surface points
+// theirs would raise it towards their own.
 double median_spacing(const Neighborhood &nb);
 
 // The plane fitted at a point: the unit normal, unoriented, and whether the point lies on one
