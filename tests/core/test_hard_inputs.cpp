@@ -140,9 +140,8 @@ std::string torus_outliers_failure(const Case &c, std::size_t surface = kTorusPo
 // many that a stray point's neighbours are other stray points only 3.6 times sparser than the
 // surface in the median, and the cloud's median spacing rises towards theirs. Closed with
 // genus 1, every torus point used, no stray point far off the surface a vertex
-// (torus_outliers_failure);
-// before the test for cluttered clouds: 1,824 boundary edges in 41 pieces, 7,992 stray points
-// woven in, 18 s.
+// (torus_outliers_failure); before the test for cluttered clouds: 1,824 boundary edges in 41
+// pieces, 7,992 stray points woven in, 18 s.
 constexpr std::size_t kClutteredTorusPoints = 10000;
 
 const Case &cluttered_torus_case() {
