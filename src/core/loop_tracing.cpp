@@ -176,18 +176,19 @@ double LoopFiller::loop_width(const std::vector<uint32_t> &loop) const {
   return std::sqrt(width);
 }
 
-// The widest waist of a loop. The waist at vertex i is its distance to the nearest vertex j
-// the loop reaches from i only the long way round: by a path at least kShortcutRatio times
-// the straight distance ij (pi/2 across a circle, far more across a narrow strip). A strip
-// torn open along a sharp edge has waists as narrow as the strip, however long it is, where
-// loop_width sees its length from the vertices near its ends. Vertices with no such j (the
-// tip of a wedge) have no waist.
+// The face along the loop's first edge (from its second vertex to its first).
 uint32_t LoopFiller::face_along(const std::vector<uint32_t> &loop) const {
   uint32_t fs[2];
   g_.mesh.edge_faces(loop[1 % loop.size()], loop[0], fs);
   return fs[0];
 }
 
+// The widest waist of a loop. The waist at vertex i is its distance to the nearest vertex j
+// the loop reaches from i only the long way round: by a path at least kShortcutRatio times
+// the straight distance ij (pi/2 across a circle, far more across a narrow strip). A strip
+// torn open along a sharp edge has waists as narrow as the strip, however long it is, where
+// loop_width sees its length from the vertices near its ends. Vertices with no such j (the
+// tip of a wedge) have no waist.
 double LoopFiller::widest_waist(const std::vector<uint32_t> &loop) const {
   const auto &w = g_.points.work;
   const std::size_t n = loop.size();
