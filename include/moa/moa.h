@@ -74,7 +74,7 @@ typedef enum moa_stage {
   MOA_STAGE_NEIGHBORS = 1,  /* k nearest neighbours, spacing, noise, stray points */
   MOA_STAGE_MESH = 2,       /* Algorithm 1: the list, maximum opposite points, judgment */
   MOA_STAGE_LOOPS = 3,      /* Algorithm 2: the loop module fills holes */
-  MOA_STAGE_FINISH = 4,     /* orientation, contract enforcement, index mapping */
+  MOA_STAGE_FINISH = 4,     /* edge flips, orientation, contract enforcement, index mapping */
   MOA_STAGE_COUNT = 5
 } moa_stage;
 
@@ -123,6 +123,8 @@ typedef struct moa_stats {
                                  in place, or jittered by up to about a third of the
                                  nearest-neighbour distance, in the whole cloud or in a region
                                  of it (two scans overlapping); 0 in a cloud given once */
+  size_t edges_flipped;       /* edges flipped to the other diagonal of their quad for a wider
+                                 smallest angle (parameter edge_flips) */
 } moa_stats;
 
 /* Version of the library actually loaded, as "MAJOR.MINOR.PATCH". Never NULL. */

@@ -169,7 +169,7 @@ void write_stats(const Options &o, const moa_ctx *ctx, const moa_stats &s, size_
       .value("used_points", s.used_points);
   j.value("unused_points", s.unused_points);
   j.value("triangles_mesh", s.triangles_mesh).value("triangles_loops", s.triangles_loops);
-  j.value("triangles_removed", s.triangles_removed);
+  j.value("triangles_removed", s.triangles_removed).value("edges_flipped", s.edges_flipped);
   j.value("boundary_edges", s.boundary_edges);
   j.value("boundary_edges_before", s.boundary_edges_before);
   j.value("smoothing_passes", s.smoothing_passes);

@@ -100,4 +100,8 @@ void fill_loops(GrowthState &g, const std::function<void(double)> &tick);
 // points were taken in.
 std::size_t take_in_points(GrowthState &g);
 
+// Flips edges to the other diagonal of their quad where that widens the smallest angle
+// (edge_flips.cpp); returns how many.
+std::size_t flip_edges(GrowthState &g);
+
 }  // namespace moa

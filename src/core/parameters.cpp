@@ -81,6 +81,12 @@ const ParamRow kRows[] = {
      "the neighbourhood grows, where a clean surface's curvature makes it grow; or, in a "
      "cloud sampled along lines, its lines are not plane curves); 2 always",
      0, 2, true, &Params::smoothing},
+    {"edge_flips",
+     "1 flips, once the mesh is complete, each edge whose two opposite angles sum past 180 "
+     "degrees to the other diagonal of its quad, when that widens the pair's smallest angle, "
+     "bends the surface no more (or less than 20 degrees) and crosses nothing; 0 keeps the "
+     "triangles as Algorithm 1 and the loop module made them",
+     0, 1, true, &Params::edge_flips},
 };
 
 }  // namespace

@@ -23,6 +23,7 @@ struct Params {
   double solid = 0;                  // 1: close every hole regardless of size
   double take_in_points = 1;         // 1: insert left-out points in the loop/finish stages
   double smoothing = 1;              // 0 never, 1 when the cloud looks noisy, 2 always
+  double edge_flips = 1;             // 1: flip edges to the wider pair of faces at the end
 };
 
 struct ParamSpec {

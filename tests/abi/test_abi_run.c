@@ -91,6 +91,38 @@ static void test_stats(void **state) {
   for (i = 0; i < MOA_STAGE_COUNT; ++i) assert_true(stats.stage_ms[i] >= 0);
 }
 
+/* The edge flips through the parameter: on a random flat patch some edges are flipped by
+ * default, none with edge_flips 0, and the triangle count is the same either way (a flip
+ * trades one diagonal of a quad for the other). */
+static void test_edge_flips_param(void **state) {
+  moa_ctx *ctx = NULL;
+  moa_stats with, without;
+  double *xyz = (double *)malloc(3 * 2000 * sizeof(double)), value = -1;
+  uint64_t seed = 12345;
+  size_t i;
+  (void)state;
+  assert_non_null(xyz);
+  for (i = 0; i < 3 * 2000; ++i) {
+    seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+    xyz[i] = i % 3 == 2 ? 0.0 : (double)(seed >> 11) / 9007199254740992.0;
+  }
+  assert_int_equal(moa_ctx_create(&ctx), MOA_OK);
+  assert_int_equal(moa_set_points(ctx, xyz, 2000), MOA_OK);
+  assert_int_equal(moa_get_param(ctx, "edge_flips", &value), MOA_OK);
+  assert_true(value == 1.0);
+  assert_int_equal(moa_run(ctx), MOA_OK);
+  assert_int_equal(moa_get_stats(ctx, &with, sizeof with), MOA_OK);
+  assert_int_equal(moa_set_param(ctx, "edge_flips", 0), MOA_OK);
+  assert_int_equal(moa_run(ctx), MOA_OK);
+  assert_int_equal(moa_get_stats(ctx, &without, sizeof without), MOA_OK);
+  assert_true(with.edges_flipped > 0);
+  assert_int_equal(without.edges_flipped, 0);
+  assert_int_equal(with.triangles, without.triangles);
+  assert_int_equal(moa_set_param(ctx, "edge_flips", 2), MOA_ERROR_INVALID_ARGUMENT);
+  moa_ctx_destroy(ctx);
+  free(xyz);
+}
+
 /* An older caller's shorter struct and a newer caller's longer one: only the overlap is written. */
 static void test_stats_size(void **state) {
   moa_ctx *ctx = (moa_ctx *)*state;
@@ -416,6 +448,7 @@ int main(void) {
       cmocka_unit_test_setup_teardown(test_run_twice_same_mesh, setup_sphere, teardown_ctx),
       cmocka_unit_test_setup_teardown(test_copy_triangles, setup_sphere, teardown_ctx),
       cmocka_unit_test_setup_teardown(test_stats, setup_sphere, teardown_ctx),
+      cmocka_unit_test(test_edge_flips_param),
       cmocka_unit_test_setup_teardown(test_stats_size, setup_sphere, teardown_ctx),
       cmocka_unit_test_setup_teardown(test_float_stride, setup_sphere, teardown_ctx),
       cmocka_unit_test_setup_teardown(test_progress_reports_every_stage, setup_sphere,
