@@ -17,11 +17,12 @@
 //     as the judgment's edge-sharing angle) and, decided exactly, cross no face.
 // The pass runs once the loop module is done, so it changes no boundary, genus or vertex,
 // only which diagonal each quad has; its order is the faces', whatever the thread count.
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <vector>
-
-#include <tbb/parallel_for.h>
 
 #include "core/growth_state.hpp"
 #include "core/predicates.hpp"
@@ -58,8 +59,8 @@ class EdgeFlipper {
   // The edges to flip are first looked for in parallel, reading the mesh only; they are
   // then flipped in the order of their faces, each judged again as it comes, and the four
   // outer edges of a flipped quad are looked at at once. An edge whose two faces stay as they
-  // were keeps its verdict, so no other edge can become one to flip.
-  std::size_t run() {
+  // were keeps its angles: the others are not worth a second look.
+  std::size_t run(const std::function<void(double)> &tick) {
     const uint32_t count = uint32_t(mesh_.face_count());
     constexpr uint32_t kChunk = 4096;
     std::vector<std::vector<std::pair<uint32_t, uint32_t>>> found((count + kChunk - 1) / kChunk);
@@ -71,7 +72,9 @@ class EdgeFlipper {
           if (offers_edge(f, u, v)) found[chunk].push_back({u, v});
         }
     });
-    for (auto &edges : found) {
+    for (std::size_t chunk = 0; chunk < found.size(); ++chunk) {
+      std::vector<std::pair<uint32_t, uint32_t>> &edges = found[chunk];
+      tick(double(chunk) / double(found.size()));
       for (const auto &[u, v] : edges)
         if (flip(u, v))
           while (!pending_.empty()) {
@@ -175,7 +178,8 @@ class EdgeFlipper {
       const bool near_a = meet(alo, ahi, glo, ghi), near_b = meet(blo, bhi, glo, ghi);
       if (!near_a && !near_b) continue;
       corners(t, gp, gi);
-      if ((near_a && triangles_cross(ap, ai, gp, gi)) || (near_b && triangles_cross(bp, bi, gp, gi)))
+      if ((near_a && triangles_cross(ap, ai, gp, gi)) ||
+          (near_b && triangles_cross(bp, bi, gp, gi)))
         return true;
     }
     return false;
@@ -229,9 +233,9 @@ class EdgeFlipper {
 
 }  // namespace
 
-std::size_t flip_edges(GrowthState &g) {
+std::size_t flip_edges(GrowthState &g, const std::function<void(double)> &tick) {
   if (g.params.edge_flips == 0) return 0;
-  return EdgeFlipper(g).run();
+  return EdgeFlipper(g).run(tick);
 }
 
 }  // namespace moa

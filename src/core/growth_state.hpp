@@ -101,7 +101,7 @@ void fill_loops(GrowthState &g, const std::function<void(double)> &tick);
 std::size_t take_in_points(GrowthState &g);
 
 // Flips edges to the other diagonal of their quad where that widens the smallest angle
-// (edge_flips.cpp); returns how many.
-std::size_t flip_edges(GrowthState &g);
+// (edge_flips.cpp); returns how many. `tick(fraction)` reports progress and may throw Cancelled.
+std::size_t flip_edges(GrowthState &g, const std::function<void(double)> &tick);
 
 }  // namespace moa

@@ -133,7 +133,7 @@ std::optional<Result> run_stages_once(double *xyz, std::size_t count, const Para
     // crossing index (at a million points 80 MB, and the flips' faces would have taken the
     // peak from 379 to 408 bytes per point).
     std::vector<uint32_t>().swap(nb.knn);
-    st.edges_flipped = flip_edges(g);
+    st.edges_flipped = flip_edges(g, [&](double f) { report(MOA_STAGE_FINISH, 0.5 * f); });
     st.embree_rebuilds = g.crossings.rebuilds() + g.parts_rebuilds;
     st.intersection_ms = g.crossings.milliseconds() + g.parts_crossing_ms;
     g.crossings.release();  // before the faces are copied out, so the copy reuses its memory
