@@ -76,6 +76,12 @@ load_start=$(cut -d' ' -f1 /proc/loadavg)
 rm -rf "$work/results" "$work/meshes" "$work/logs" "$work/normals"
 mkdir -p "$work/results" "$work/meshes" "$work/logs" "$work/normals"
 
+# The revision of the code that is built, read before the build: edits made while the run goes
+# on do not go into it.
+revision=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)
+if [[ $revision != unknown && -n $(git -C "$root" status --porcelain 2>/dev/null) ]]; then
+  revision="$revision with uncommitted changes"
+fi
 echo "== configure and build in $build"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DMOA_BUILD_BENCH=ON \
   -DMOA_BUILD_TESTS=OFF -DMOA_BUILD_CLI=OFF -DMOA_BUILD_BINDINGS=OFF >"$work/logs/configure.log" 2>&1 ||
@@ -217,10 +223,6 @@ while IFS=$'\t' read -r -u 3 name file points _kind _source _seed large _hash no
   fi
 done 3<"$work/inputs.tsv"
 
-revision=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)
-if [[ $revision != unknown && -n $(git -C "$root" status --porcelain 2>/dev/null) ]]; then
-  revision="$revision with uncommitted changes"
-fi
 {
   printf 'command\t%s\n' "$command_line"
   printf 'started\t%s\n' "$started"
