@@ -44,10 +44,6 @@ const double kCosFreeBend = std::cos(degrees_to_radians(20.0));
 // 11 % with 90, the deepest face unchanged up to 60.
 const double kCosMaxBend = std::cos(degrees_to_radians(45.0));
 
-bool runs(const Tri &t, uint32_t u, uint32_t v) {
-  return (t[0] == u && t[1] == v) || (t[1] == u && t[2] == v) || (t[2] == u && t[0] == v);
-}
-
 class EdgeFlipper {
  public:
   explicit EdgeFlipper(GrowthState &g)
@@ -167,15 +163,11 @@ class EdgeFlipper {
     corners(b, bp, bi);
     if (triangles_cross(ap, ai, bp, bi)) return true;
     // The exact tests only where the boxes meet (faces_in_box pads its boxes as this does).
-    auto meet = [](const Vec3 &l1, const Vec3 &h1, const Vec3 &l2, const Vec3 &h2) {
-      return l1.x <= h2.x && l2.x <= h1.x && l1.y <= h2.y && l2.y <= h1.y && l1.z <= h2.z &&
-             l2.z <= h1.z;
-    };
     for (uint32_t f : near_) {
       if (f == f1 || f == f2) continue;
       const Tri &t = mesh_.stored(f);
       g_.crossings.bounds(t, glo, ghi);
-      const bool near_a = meet(alo, ahi, glo, ghi), near_b = meet(blo, bhi, glo, ghi);
+      const bool near_a = boxes_meet(alo, ahi, glo, ghi), near_b = boxes_meet(blo, bhi, glo, ghi);
       if (!near_a && !near_b) continue;
       corners(t, gp, gi);
       if ((near_a && triangles_cross(ap, ai, gp, gi)) ||
@@ -188,8 +180,8 @@ class EdgeFlipper {
     uint32_t fs[2];
     if (mesh_.edge_faces(u, v, fs) != 2) return false;
     const Tri t1 = mesh_.oriented(fs[0]), t2 = mesh_.oriented(fs[1]);
-    if (!runs(t1, u, v)) std::swap(u, v);
-    if (!runs(t1, u, v) || !runs(t2, v, u)) return false;  // not oriented alike: leave it
+    if (!has_directed(t1, u, v)) std::swap(u, v);
+    if (!has_directed(t1, u, v) || !has_directed(t2, v, u)) return false;  // not oriented alike
     const uint32_t c = third_vertex(t1, u, v), d = third_vertex(t2, u, v);
     uint32_t on_cd[2];
     if (c == d || !wider_across(u, v, c, d) || mesh_.edge_faces(c, d, on_cd) != 0) return false;

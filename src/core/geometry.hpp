@@ -27,6 +27,12 @@ inline double dist(Vec3 a, Vec3 b) { return norm(a - b); }
 inline Vec3 midpoint(Vec3 a, Vec3 b) { return (a + b) * 0.5; }
 inline Vec3 centroid(Vec3 a, Vec3 b, Vec3 c) { return (a + b + c) * (1.0 / 3.0); }
 
+// Whether the closed boxes alo..ahi and blo..bhi meet.
+inline bool boxes_meet(const Vec3 &alo, const Vec3 &ahi, const Vec3 &blo, const Vec3 &bhi) {
+  return ahi.x >= blo.x && alo.x <= bhi.x && ahi.y >= blo.y && alo.y <= bhi.y && ahi.z >= blo.z &&
+         alo.z <= bhi.z;
+}
+
 // Angle between two vectors in radians, well conditioned near 0 and pi.
 inline double angle_between(Vec3 a, Vec3 b) { return std::atan2(norm(cross(a, b)), dot(a, b)); }
 

@@ -69,11 +69,6 @@ bool too_many_cells(const Vec3 &lo, const Vec3 &hi, double cell) {
   return !(span <= kMaxCellsPerFace);  // NaN counts as too many
 }
 
-bool boxes_meet(const Vec3 &alo, const Vec3 &ahi, const Vec3 &blo, const Vec3 &bhi) {
-  return ahi.x >= blo.x && alo.x <= bhi.x && ahi.y >= blo.y && alo.y <= bhi.y &&
-         ahi.z >= blo.z && alo.z <= bhi.z;
-}
-
 // A cell's Morton code: cells near each other get codes near each other, which the grid keeps
 // in nearby slots (face_grid.hpp).
 uint64_t cell_key(int64_t x, int64_t y, int64_t z) {

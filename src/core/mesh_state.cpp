@@ -85,12 +85,6 @@ void MeshState::unlink(uint32_t f, uint32_t v) {
   if (--a.count == 0) a.last = f;
 }
 
-static bool has_directed(const Tri &t, uint32_t u, uint32_t v) {
-  for (int i = 0; i < 3; ++i)
-    if (t[i] == u && t[(i + 1) % 3] == v) return true;
-  return false;
-}
-
 int MeshState::mismatch(const Tri &t, uint32_t g) const {
   // Stored orders only; the parities are folded in by the caller.
   for (int i = 0; i < 3; ++i) {

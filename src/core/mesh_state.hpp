@@ -22,6 +22,13 @@ inline uint32_t third_vertex(const Tri &t, uint32_t u, uint32_t v) {
   return kNone;
 }
 
+// Whether t, in its stored order, runs from u to v along one of its edges.
+inline bool has_directed(const Tri &t, uint32_t u, uint32_t v) {
+  for (int i = 0; i < 3; ++i)
+    if (t[i] == u && t[(i + 1) % 3] == v) return true;
+  return false;
+}
+
 // A face and, per corner, the next face around that corner's vertex: the faces around each
 // vertex form a list threaded through the faces themselves, oldest first. 24 bytes per face
 // and 16 per vertex hold what a vector per vertex and an edge-to-face hash map held in about
