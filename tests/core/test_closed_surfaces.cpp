@@ -199,6 +199,22 @@ const Case &density_gradient_case() {
   return c;
 }
 
+// Anisotropic sampling: uniform samples of a torus stretched threefold along an oblique axis,
+// so the points lie three times farther apart along that axis than across it (as on a scan
+// stretched by its scanner's step, or the long triangles of a mesh whose vertices are given).
+// Every spacing-relative default must still see one closed surface of genus 1.
+const Case &stretched_torus_case() {
+  Points p = torus_random(8000, 1.0, 0.35, 27);
+  const double d[3] = {1.0 / 3, 2.0 / 3, 2.0 / 3};  // the axis, of unit length
+  constexpr double kStretch = 3.0;
+  for (std::size_t i = 0; i < p.size(); i += 3) {
+    const double along = p[i] * d[0] + p[i + 1] * d[1] + p[i + 2] * d[2];
+    for (int a = 0; a < 3; ++a) p[i + a] += (kStretch - 1) * along * d[a];
+  }
+  static const Case c = make_case("torus stretched threefold along an oblique axis", p);
+  return c;
+}
+
 // Survey data as LAS files hold it: metres far from the origin (a UTM-like offset), rounded to a
 // fixed step. The coordinates differ from each other only in their last seven or eight digits,
 // the rounding lines points up and makes exact duplicates, and every one must merge.
@@ -334,6 +350,7 @@ MOA_CONTRACT_TESTS(dense_cylinder_contour_stack)
 MOA_CONTRACT_TESTS(ct_torus)
 MOA_CONTRACT_TESTS(ct_organ)
 MOA_CONTRACT_TESTS(ct_coarse_torus)
+MOA_CONTRACT_TESTS(stretched_torus)
 
 static void test_fibonacci_sphere_closed_genus0(void **) { MOA_EXPECT(closed_failure(fibonacci_sphere_case(), 0)); }
 static void test_random_sphere_closed_genus0(void **) { MOA_EXPECT(closed_failure(random_sphere_case(), 0)); }
@@ -384,6 +401,9 @@ static void test_noisy_torus_closed_genus1(void **) { MOA_EXPECT(closed_failure(
 static void test_noisy_genus2_closed_genus2(void **) { MOA_EXPECT(closed_failure(noisy_genus2_case(), 2)); }
 static void test_density_gradient_closed_genus1(void **) {
   MOA_EXPECT(closed_failure(density_gradient_case(), 1));
+}
+static void test_stretched_torus_closed_genus1(void **) {
+  MOA_EXPECT(closed_failure(stretched_torus_case(), 1));
 }
 static void test_survey_coordinates_closed_genus1(void **) {
   MOA_EXPECT(closed_failure(survey_coordinates_case(), 1));
@@ -458,6 +478,8 @@ int main(void) {
       MOA_CONTRACT_ENTRIES(density_gradient), cmocka_unit_test(test_density_gradient_closed_genus1),
       MOA_CONTRACT_ENTRIES(survey_coordinates),
       cmocka_unit_test(test_survey_coordinates_closed_genus1),
+      MOA_CONTRACT_ENTRIES(stretched_torus),
+      cmocka_unit_test(test_stretched_torus_closed_genus1),
       MOA_CONTRACT_ENTRIES(contour_stack),    cmocka_unit_test(test_contour_stack_closed_genus1),
       MOA_CONTRACT_ENTRIES(fine_contour_stack), cmocka_unit_test(test_fine_contour_stack_closed_genus1),
       MOA_CONTRACT_ENTRIES(sphere_contour_stack),

@@ -372,6 +372,40 @@ std::string coarse_beside_fine_failure(const Case &c) {
   return "";
 }
 
+// Two linked rings: tori of tube radius 0.43 threaded through each other, one in the xy-plane
+// and one in the xz-plane, so that each tube passes through the other's hole. Where they pass,
+// the surfaces come within about five spacings of each other (0.14 apart, the spacing about
+// 0.026) along a curved stretch. With a tube radius of 0.46 (0.08 apart, three spacings) the
+// neighbour lists reach across, their planes tilt, and the rings come out joined.
+constexpr std::size_t kLinkedTorusPoints = 6000;
+
+const Case &linked_tori_case() {
+  static const Case c = [] {
+    Points p = torus_random(kLinkedTorusPoints, 1.0, 0.43, 65);
+    const Points other = torus_random(kLinkedTorusPoints, 1.0, 0.43, 66);
+    for (std::size_t i = 0; i < other.size(); i += 3)  // turned into the xz-plane, moved by 1 in x
+      p.insert(p.end(), {other[i] + 1.0, other[i + 2], other[i + 1]});
+    return make_case("two linked tori", shuffled(p, 67));
+  }();
+  return c;
+}
+
+// Two closed rings of genus 1 each, every point used.
+std::string linked_tori_failure(const Case &c) {
+  const ContractReport &r = c.report;
+  const bool each_genus1 =
+      r.closed_genus.size() == 2 && r.closed_genus[0] == 1 && r.closed_genus[1] == 1;
+  if (r.components != 2 || r.closed_components != 2 || r.boundary_edges != 0 || !each_genus1)
+    return c.name + ": " + std::to_string(r.components) + " pieces (" +
+           std::to_string(r.closed_components) + " closed), " + std::to_string(r.boundary_edges) +
+           " boundary edges, genus " + std::to_string(r.genus_sum) +
+           "; expected two closed rings of genus 1";
+  if (r.vertices_used != 2 * kLinkedTorusPoints)
+    return c.name + ": " + std::to_string(r.vertices_used) + " points used of " +
+           std::to_string(2 * kLinkedTorusPoints);
+  return "";
+}
+
 }  // namespace
 
 MOA_CONTRACT_TESTS(noisy_sphere)
@@ -394,6 +428,7 @@ static void test_overlap_torus_deterministic(void **) {
 
 MOA_CONTRACT_TESTS(scattered_spheres)
 MOA_CONTRACT_TESTS(coarse_beside_fine)
+MOA_CONTRACT_TESTS(linked_tori)
 
 static void test_coarse_beside_fine_both_closed(void **) {
   MOA_EXPECT(coarse_beside_fine_failure(coarse_beside_fine_case()));
@@ -401,6 +436,10 @@ static void test_coarse_beside_fine_both_closed(void **) {
 
 static void test_scattered_spheres_each_closed(void **) {
   MOA_EXPECT(scattered_spheres_failure(scattered_spheres_case()));
+}
+
+static void test_linked_tori_apart_and_closed(void **) {
+  MOA_EXPECT(linked_tori_failure(linked_tori_case()));
 }
 
 static void test_torus_outliers_left_out(void **) {
@@ -445,6 +484,8 @@ int main(void) {
       cmocka_unit_test(test_scattered_spheres_each_closed),
       MOA_CONTRACT_ENTRIES(coarse_beside_fine),
       cmocka_unit_test(test_coarse_beside_fine_both_closed),
+      MOA_CONTRACT_ENTRIES(linked_tori),
+      cmocka_unit_test(test_linked_tori_apart_and_closed),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
