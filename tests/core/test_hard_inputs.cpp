@@ -374,9 +374,10 @@ std::string coarse_beside_fine_failure(const Case &c) {
 
 // Two linked rings: tori of tube radius 0.43 threaded through each other, one in the xy-plane
 // and one in the xz-plane, so that each tube passes through the other's hole. Where they pass,
-// the surfaces come within about five spacings of each other (0.14 apart, the spacing about
-// 0.026) along a curved stretch. With a tube radius of 0.46 (0.08 apart, three spacings) the
-// neighbour lists reach across, their planes tilt, and the rings come out joined.
+// the surfaces come within 0.14 of each other along a curved stretch: 2.7 point spacings (the
+// mean distance to a point's six nearest, about 0.05), five nearest-neighbour distances. With a
+// tube radius of 0.46 (0.08 apart, 1.5 spacings) the neighbour lists reach across, their planes
+// tilt, and the rings come out joined.
 constexpr std::size_t kLinkedTorusPoints = 6000;
 
 const Case &linked_tori_case() {
