@@ -200,8 +200,9 @@ const Case &density_gradient_case() {
 }
 
 // Anisotropic sampling: uniform samples of a torus stretched threefold along an oblique axis,
-// so the points lie three times farther apart along that axis than across it (as on a scan
-// stretched by its scanner's step, or the long triangles of a mesh whose vertices are given).
+// so the points lie three times farther apart along that axis than across it (as where a
+// scanner's lines lie farther apart than its samples along a line, or in the vertices of a mesh
+// of long, thin triangles).
 // Every spacing-relative default must still see one closed surface of genus 1.
 const Case &stretched_torus_case() {
   Points p = torus_random(8000, 1.0, 0.35, 27);

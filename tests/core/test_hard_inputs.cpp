@@ -1,7 +1,8 @@
 // Property tests on inputs that are not well sampled: noise, random clumps and gaps, sheets
 // closer than the spacing, a slab thinner than the spacing, sharp random-sampled edges, stray
-// points in the volume around a surface, a cloud given twice. The reconstruction may leave
-// holes here, but the contract C1-C6 holds on every input.
+// points in the volume around a surface, a cloud given twice, two rings threaded close through
+// each other. The reconstruction may leave holes here, but the contract C1-C6 holds on every
+// input.
 #include "core_harness.hpp"
 
 #include <algorithm>
