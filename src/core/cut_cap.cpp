@@ -16,12 +16,6 @@ double cross2(const Point2 &o, const Point2 &a, const Point2 &b) {
   return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
 }
 
-// The smallest angle of triangle abc (radians).
-double smallest_angle(const Vec3 &a, const Vec3 &b, const Vec3 &c) {
-  return std::min({angle_between(b - a, c - a), angle_between(c - b, a - b),
-                   angle_between(a - c, b - c)});
-}
-
 }  // namespace
 
 std::vector<Tri> flat_cap(const std::vector<Vec3> &points, const std::vector<uint32_t> &loop) {

@@ -104,12 +104,8 @@ class EdgeFlipper {
   Vec3 normal(uint32_t a, uint32_t b, uint32_t c) const {
     return normalized(cross(p_[b] - p_[a], p_[c] - p_[a]));
   }
-  // The smallest angle of triangle abc: the one facing its shortest side.
   double smallest_angle(uint32_t a, uint32_t b, uint32_t c) const {
-    const double ab = norm2(p_[a] - p_[b]), bc = norm2(p_[b] - p_[c]), ca = norm2(p_[c] - p_[a]);
-    if (ab <= bc && ab <= ca) return angle_at(p_[c], p_[a], p_[b]);
-    if (bc <= ca) return angle_at(p_[a], p_[b], p_[c]);
-    return angle_at(p_[b], p_[c], p_[a]);
+    return moa::smallest_angle(p_[a], p_[b], p_[c]);
   }
   // Whether quad u c v d (faces uvc, vud) has the better pair of faces across cd.
   bool wider_across(uint32_t u, uint32_t v, uint32_t c, uint32_t d) const {

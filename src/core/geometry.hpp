@@ -39,6 +39,15 @@ inline double angle_between(Vec3 a, Vec3 b) { return std::atan2(norm(cross(a, b)
 // Angle at vertex c of triangle (a, b, c), i.e. the angle under which c sees segment ab.
 inline double angle_at(Vec3 c, Vec3 a, Vec3 b) { return angle_between(a - c, b - c); }
 
+// The smallest angle of triangle abc (radians): the one facing its shortest side, so one angle
+// is computed instead of three.
+inline double smallest_angle(Vec3 a, Vec3 b, Vec3 c) {
+  const double ab = norm2(a - b), bc = norm2(b - c), ca = norm2(c - a);
+  if (ab <= bc && ab <= ca) return angle_at(c, a, b);
+  if (bc <= ca) return angle_at(a, b, c);
+  return angle_at(b, c, a);
+}
+
 constexpr double kPi = 3.14159265358979323846;
 inline double degrees_to_radians(double d) { return d * kPi / 180.0; }
 
