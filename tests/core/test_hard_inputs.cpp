@@ -297,6 +297,25 @@ std::string overlap_failure(const Case &c) {
   return "";
 }
 
+// `pieces` separate closed pieces, each of genus `genus`, using all `points` points; "" when
+// the result is that, else a message naming what it is instead.
+std::string closed_pieces_failure(const Case &c, std::size_t pieces, long genus,
+                                  std::size_t points) {
+  const ContractReport &r = c.report;
+  const bool each_genus = std::all_of(r.closed_genus.begin(), r.closed_genus.end(),
+                                      [&](long g) { return g == genus; });
+  if (r.components != pieces || r.closed_components != pieces || r.boundary_edges != 0 ||
+      !each_genus)
+    return c.name + ": " + std::to_string(r.components) + " pieces (" +
+           std::to_string(r.closed_components) + " closed), " + std::to_string(r.boundary_edges) +
+           " boundary edges, genus " + std::to_string(r.genus_sum) + "; expected " +
+           std::to_string(pieces) + " closed pieces of genus " + std::to_string(genus);
+  if (r.vertices_used != points)
+    return c.name + ": " + std::to_string(r.vertices_used) + " points used of " +
+           std::to_string(points);
+  return "";
+}
+
 // Many small objects apart: 100 unit spheres of 50 random points each, scattered through a box
 // 100 wide at least 5 apart. Each closes on its own. The noise estimate's wider neighbourhoods
 // reached across to the next spheres, flat across several of them where a sphere's own 10
@@ -327,15 +346,9 @@ const Case &scattered_spheres_case() {
 
 // Every sphere closed with genus 0, every point used, and the cloud not smoothed.
 std::string scattered_spheres_failure(const Case &c) {
-  const ContractReport &r = c.report;
-  if (r.components != kScatteredSpheres || r.closed_components != kScatteredSpheres ||
-      r.boundary_edges != 0 || r.genus_sum != 0)
-    return c.name + ": " + std::to_string(r.components) + " pieces (" +
-           std::to_string(r.closed_components) + " closed), " + std::to_string(r.boundary_edges) +
-           " boundary edges, genus " + std::to_string(r.genus_sum) +
-           "; expected 100 closed spheres";
-  if (r.vertices_used != kScatteredSpheres * kScatteredSpherePoints)
-    return c.name + ": " + std::to_string(r.vertices_used) + " points used of 5000";
+  const std::string closed =
+      closed_pieces_failure(c, kScatteredSpheres, 0, kScatteredSpheres * kScatteredSpherePoints);
+  if (!closed.empty()) return closed;
   if (c.run.stats.smoothing_passes != 0)
     return c.name + ": smoothed as a noisy cloud (" +
            std::to_string(c.run.stats.smoothing_passes) + " passes)";
@@ -362,15 +375,7 @@ const Case &coarse_beside_fine_case() {
 
 // Two closed spheres of genus 0, every point of both used.
 std::string coarse_beside_fine_failure(const Case &c) {
-  const ContractReport &r = c.report;
-  if (r.components != 2 || r.closed_components != 2 || r.boundary_edges != 0 || r.genus_sum != 0)
-    return c.name + ": " + std::to_string(r.components) + " pieces (" +
-           std::to_string(r.closed_components) + " closed), " + std::to_string(r.boundary_edges) +
-           " boundary edges; expected two closed spheres";
-  if (r.vertices_used != kFineSpherePoints + kCoarseSpherePoints)
-    return c.name + ": " + std::to_string(r.vertices_used) + " points used of " +
-           std::to_string(kFineSpherePoints + kCoarseSpherePoints);
-  return "";
+  return closed_pieces_failure(c, 2, 0, kFineSpherePoints + kCoarseSpherePoints);
 }
 
 // Two linked rings: tori of tube radius 0.43 threaded through each other, one in the xy-plane
@@ -394,18 +399,7 @@ const Case &linked_tori_case() {
 
 // Two closed rings of genus 1 each, every point used.
 std::string linked_tori_failure(const Case &c) {
-  const ContractReport &r = c.report;
-  const bool each_genus1 =
-      r.closed_genus.size() == 2 && r.closed_genus[0] == 1 && r.closed_genus[1] == 1;
-  if (r.components != 2 || r.closed_components != 2 || r.boundary_edges != 0 || !each_genus1)
-    return c.name + ": " + std::to_string(r.components) + " pieces (" +
-           std::to_string(r.closed_components) + " closed), " + std::to_string(r.boundary_edges) +
-           " boundary edges, genus " + std::to_string(r.genus_sum) +
-           "; expected two closed rings of genus 1";
-  if (r.vertices_used != 2 * kLinkedTorusPoints)
-    return c.name + ": " + std::to_string(r.vertices_used) + " points used of " +
-           std::to_string(2 * kLinkedTorusPoints);
-  return "";
+  return closed_pieces_failure(c, 2, 1, 2 * kLinkedTorusPoints);
 }
 
 }  // namespace
