@@ -205,14 +205,17 @@ const Case &density_gradient_case() {
 // of long, thin triangles).
 // Every spacing-relative default must still see one closed surface of genus 1.
 const Case &stretched_torus_case() {
-  Points p = torus_random(8000, 1.0, 0.35, 27);
-  const double d[3] = {1.0 / 3, 2.0 / 3, 2.0 / 3};  // the axis, of unit length
-  constexpr double kStretch = 3.0;
-  for (std::size_t i = 0; i < p.size(); i += 3) {
-    const double along = p[i] * d[0] + p[i + 1] * d[1] + p[i + 2] * d[2];
-    for (int a = 0; a < 3; ++a) p[i + a] += (kStretch - 1) * along * d[a];
-  }
-  static const Case c = make_case("torus stretched threefold along an oblique axis", p);
+  // Built once: the cloud is made inside the initializer, not again on every call.
+  static const Case c = [] {
+    Points p = torus_random(8000, 1.0, 0.35, 27);
+    const double d[3] = {1.0 / 3, 2.0 / 3, 2.0 / 3};  // the axis, of unit length
+    constexpr double kStretch = 3.0;
+    for (std::size_t i = 0; i < p.size(); i += 3) {
+      const double along = p[i] * d[0] + p[i + 1] * d[1] + p[i + 2] * d[2];
+      for (int a = 0; a < 3; ++a) p[i + a] += (kStretch - 1) * along * d[a];
+    }
+    return make_case("torus stretched threefold along an oblique axis", p);
+  }();
   return c;
 }
 
@@ -220,19 +223,22 @@ const Case &stretched_torus_case() {
 // fixed step. The coordinates differ from each other only in their last seven or eight digits,
 // the rounding lines points up and makes exact duplicates, and every one must merge.
 const Case &survey_coordinates_case() {
-  const Points torus = torus_random(6000, 1.0, 0.35, 25);
-  const double offset[3] = {512345.0, 6123456.0, 87.0};
-  const double step = 0.012;  // a quarter of the point spacing
-  Points p;
-  std::set<std::array<long long, 3>> seen;
-  std::size_t duplicates = 0;
-  for (std::size_t i = 0; i < torus.size(); i += 3) {
-    std::array<long long, 3> cell;
-    for (int a = 0; a < 3; ++a) cell[a] = std::llround((torus[i + a] + offset[a]) / step);
-    duplicates += !seen.insert(cell).second;
-    for (int a = 0; a < 3; ++a) p.push_back(double(cell[a]) * step);
-  }
-  static const Case c = make_case("torus in survey coordinates", p, duplicates);
+  // Built once: the cloud is made inside the initializer, not again on every call.
+  static const Case c = [] {
+    const Points torus = torus_random(6000, 1.0, 0.35, 25);
+    const double offset[3] = {512345.0, 6123456.0, 87.0};
+    const double step = 0.012;  // a quarter of the point spacing
+    Points p;
+    std::set<std::array<long long, 3>> seen;
+    std::size_t duplicates = 0;
+    for (std::size_t i = 0; i < torus.size(); i += 3) {
+      std::array<long long, 3> cell;
+      for (int a = 0; a < 3; ++a) cell[a] = std::llround((torus[i + a] + offset[a]) / step);
+      duplicates += !seen.insert(cell).second;
+      for (int a = 0; a < 3; ++a) p.push_back(double(cell[a]) * step);
+    }
+    return make_case("torus in survey coordinates", p, duplicates);
+  }();
   return c;
 }
 

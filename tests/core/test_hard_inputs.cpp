@@ -408,7 +408,6 @@ std::string linked_tori_failure(const Case &c) {
 // each other meet along a circle: a mesh of both must stop short of that circle on one of them
 // (5,949-5,999 of 6,000 points used on five samples, in 4-10 boundary loops).
 constexpr std::size_t kMobiusPoints = 4000;
-constexpr double kPi = 3.14159265358979323846;
 
 const Case &mobius_strip_case() {
   static const Case c = [] {
@@ -416,7 +415,7 @@ const Case &mobius_strip_case() {
     Rng rng(86);
     for (std::size_t i = 0; i < kMobiusPoints; ++i) {
       // Width 0.6 across a centre circle of radius 1, turning half a turn on the way round.
-      const double u = rng.uniform(0, 2 * kPi), v = rng.uniform(-0.3, 0.3);
+      const double u = rng.uniform(0, 2 * M_PI), v = rng.uniform(-0.3, 0.3);
       const double rho = 1 + v * std::cos(u / 2);
       p.insert(p.end(), {rho * std::cos(u), rho * std::sin(u), v * std::sin(u / 2)});
     }
