@@ -27,17 +27,12 @@ constexpr int kStrictPasses = 1;
 // Longest loop capped so (the cost of clipping its ears grows with the square of its length).
 constexpr std::size_t kMaxCappedLoop = 8192;
 // A cloud that fills a volume instead of sampling a surface: Algorithm 1's triangles there meet
-// in several fans at most vertices, and opening those pinches after the first fill round takes
-// more than this share of the faces away (61 % on 25,000 random points in a cube; at most 12 %
-// on 346 clouds of surfaces, noisy, anisotropic and scanned ones included). Refilling such a
-// tangle only builds it again: the later rounds, the patches and the take-in added and removed
-// about five faces per point, in time growing faster than the cloud (526 s at 200,000
-// points). They are skipped there.
-constexpr double kTangledShare = 0.4;
-// The same tangle, seen before any filling: over this share of the vertices Algorithm 1 used
-// carry faces in several fans (66 % on random points in a cube, 53-64 % on noisy points along
-// a line or in small blobs; at most 15 % on the 346 surface clouds). The module then skips its
-// rounds too: their first fill cost 37 s on 100,000 points in 200 blobs.
+// in several fans at over this share of the vertices they use (66 % on random points in a cube,
+// 53-64 % on noisy points along a line or in small blobs; at most 15 % on 346 clouds of
+// surfaces, noisy, anisotropic and scanned ones included). Filling such a tangle only builds
+// it again: opening the pinches after the first fill took 61 % of the faces away, and the
+// rounds, patches and take-in added and removed about five faces per point, in time growing
+// faster than the cloud (526 s at 200,000 random points in a cube). They are skipped there.
 constexpr double kTangledVertices = 0.5;
 
 // Whether over kTangledVertices of the vertices in the mesh carry faces in several fans.
@@ -320,18 +315,13 @@ void fill_loops(GrowthState &g, const std::function<void(double)> &tick) {
   const std::size_t first_loop_face = g.mesh.face_count();
   g.stats.triangles_removed += LoopFiller(g).drop_stray_pieces(false);
   constexpr int kRounds = 6;
-  bool tangled = mostly_pinched(g);
+  const bool tangled = mostly_pinched(g);
   for (int round = 0; !tangled && round < kRounds; ++round) {
     LoopFiller filler(g);
     filler.run([&](double f) { report(kRoundsShare * (round + f) / kRounds); });
     if (round + 1 == kRounds) break;
-    const std::size_t live = g.mesh.face_count() - g.mesh.removed_count();
+    // In this order, spelled out: the operands of + may be evaluated either way round.
     std::size_t removed = open_pinched_vertices(g);
-    if (double(removed) > kTangledShare * double(live)) {
-      g.stats.triangles_removed += removed;
-      tangled = true;
-      break;
-    }
     removed += filler.widen_open_holes();
     g.stats.triangles_removed += removed;
     if (removed == 0) break;
