@@ -314,19 +314,21 @@ void fill_loops(GrowthState &g, const std::function<void(double)> &tick) {
 
   const std::size_t first_loop_face = g.mesh.face_count();
   g.stats.triangles_removed += LoopFiller(g).drop_stray_pieces(false);
-  constexpr int kRounds = 6;
+  // A tangle (mostly_pinched) gets none of the filling: the rounds, the zipping, the patching
+  // and, below, the take-in.
   const bool tangled = mostly_pinched(g);
-  for (int round = 0; !tangled && round < kRounds; ++round) {
-    LoopFiller filler(g);
-    filler.run([&](double f) { report(kRoundsShare * (round + f) / kRounds); });
-    if (round + 1 == kRounds) break;
-    // In this order, spelled out: the operands of + may be evaluated either way round.
-    std::size_t removed = open_pinched_vertices(g);
-    removed += filler.widen_open_holes();
-    g.stats.triangles_removed += removed;
-    if (removed == 0) break;
-  }
   if (!tangled) {
+    constexpr int kRounds = 6;
+    for (int round = 0; round < kRounds; ++round) {
+      LoopFiller filler(g);
+      filler.run([&](double f) { report(kRoundsShare * (round + f) / kRounds); });
+      if (round + 1 == kRounds) break;
+      // In this order, spelled out: the operands of + may be evaluated either way round.
+      std::size_t removed = open_pinched_vertices(g);
+      removed += filler.widen_open_holes();
+      g.stats.triangles_removed += removed;
+      if (removed == 0) break;
+    }
     // What stays open may be a strip between two pieces whose loops each count as a border.
     // A strip zipped in part leaves short holes between the triangles that passed: a fill
     // round, then the patching below.
