@@ -2,6 +2,7 @@
 // the judgment and the statistics.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -69,6 +70,11 @@ struct GrowthState {
   TopologyJudge judge;
   OppositeAngleSearch search;
   moa_stats &stats;
+  // The vertices of tangles: pieces of Algorithm 1's mesh that fill a volume rather than line a
+  // surface (mark_tangles, loop_filler.cpp). The loop module fills no hole among them and
+  // takes in no point next to them. Empty when there is none.
+  std::vector<uint8_t> tangled;
+  bool in_tangle(uint32_t v) const { return !tangled.empty() && tangled[v] != 0; }
   // Embree rebuilds and crossing-test time of the parallel first pass's parts (build_mesh),
   // summed over the parts.
   std::size_t parts_rebuilds = 0;

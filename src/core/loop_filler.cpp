@@ -26,24 +26,47 @@ constexpr int kPasses = 3;
 constexpr int kStrictPasses = 1;
 // Longest loop capped so (the cost of clipping its ears grows with the square of its length).
 constexpr std::size_t kMaxCappedLoop = 8192;
-// A cloud that fills a volume instead of sampling a surface: Algorithm 1's triangles there meet
-// in several fans at over this share of the vertices they use (66 % on random points in a cube,
-// 53-64 % on noisy points along a line or in small blobs; at most 15 % on 346 clouds of
-// surfaces, noisy, anisotropic and scanned ones included). Filling such a tangle only builds
-// it again: opening the pinches after the first fill took 61 % of the faces away, and the
-// rounds, patches and take-in added and removed about five faces per point, in time growing
-// faster than the cloud (526 s at 200,000 random points in a cube). They are skipped there.
+// A piece of the mesh that fills a volume instead of lining a surface (random points in a cube,
+// clutter beside a scanned object): Algorithm 1's triangles there meet in several fans at over
+// this share of the vertices the piece uses (66 % on random points in a cube, 53-64 % on noisy
+// points along a line or in small blobs; at most 18 % on the pieces of 50 vertices or more
+// among 346 clouds of surfaces, noisy, anisotropic and scanned ones included). Filling such a
+// tangle only builds it again: opening the pinches after the first fill took 61 % of the faces
+// away, and the rounds, patches and take-in added and removed about five faces per point, in
+// time growing faster than the cloud (526 s at 200,000 random points in a cube).
 constexpr double kTangledVertices = 0.5;
 
-// Whether over kTangledVertices of the vertices in the mesh carry faces in several fans.
-bool mostly_pinched(const GrowthState &g) {
-  std::size_t used = 0, pinched = 0;
-  for (uint32_t v = 0; v < g.points.size(); ++v)
-    if (g.mesh.is_used(v)) {
-      ++used;
-      pinched += g.mesh.fan_count(v) >= 2;
+// Marks the vertices of the pieces (joined through shared vertices) over kTangledVertices of
+// whose vertices carry faces in several fans. A piece, not the whole mesh: clutter beside a
+// surface is a tangle of its own (a sphere beside random points in a cube: 67 % of the cube's
+// vertices, none of the sphere's), while a share over a vertex's own neighbourhood does not
+// separate (a noisy surface has patches where most vertices are pinched).
+void mark_tangles(GrowthState &g) {
+  const uint32_t n = uint32_t(g.points.size());
+  DisjointSets pieces(n);
+  for (uint32_t f = 0; f < g.mesh.face_count(); ++f)
+    if (g.mesh.alive(f)) {
+      const Tri &t = g.mesh.stored(f);
+      pieces.join(t[0], t[1]);
+      pieces.join(t[1], t[2]);
     }
-  return double(pinched) > kTangledVertices * double(used);
+  std::vector<uint32_t> used(n, 0), pinched(n, 0);
+  bool any = false;
+  for (uint32_t v = 0; v < n; ++v)
+    if (g.mesh.is_used(v)) {
+      const uint32_t r = pieces.root(v);
+      ++used[r];
+      pinched[r] += g.mesh.fan_count(v) >= 2;
+    }
+  std::vector<uint8_t> tangled(n, 0);
+  for (uint32_t v = 0; v < n; ++v)
+    if (g.mesh.is_used(v)) {
+      const uint32_t r = pieces.root(v);
+      tangled[v] = double(pinched[r]) > kTangledVertices * double(used[r]);
+      any |= tangled[v] != 0;
+    }
+  g.tangled.clear();
+  if (any) g.tangled = std::move(tangled);
 }
 
 }  // namespace
@@ -314,34 +337,31 @@ void fill_loops(GrowthState &g, const std::function<void(double)> &tick) {
 
   const std::size_t first_loop_face = g.mesh.face_count();
   g.stats.triangles_removed += LoopFiller(g).drop_stray_pieces(false);
-  // A tangle (mostly_pinched) gets none of the filling: the rounds, the zipping, the patching
-  // and, below, the take-in.
-  const bool tangled = mostly_pinched(g);
-  if (!tangled) {
-    constexpr int kRounds = 6;
-    for (int round = 0; round < kRounds; ++round) {
-      LoopFiller filler(g);
-      filler.run([&](double f) { report(kRoundsShare * (round + f) / kRounds); });
-      if (round + 1 == kRounds) break;
-      // In this order, spelled out: the operands of + may be evaluated either way round.
-      std::size_t removed = open_pinched_vertices(g);
-      removed += filler.widen_open_holes();
-      g.stats.triangles_removed += removed;
-      if (removed == 0) break;
-    }
-    // What stays open may be a strip between two pieces whose loops each count as a border.
-    // A strip zipped in part leaves short holes between the triangles that passed: a fill
-    // round, then the patching below.
-    if (LoopFiller(g).zip_parallel_loops() > 0)
-      LoopFiller(g).run([&](double) { report(kRoundsShare); });
-    // Stray pieces go before the patching (an island in a hole blocks its patch) and after it
-    // (widening a hole can cut a piece off); their points join the others left out. Patching
-    // one hole can free its neighbour (the faces a widened hole gave up were what blocked the
-    // other): patch again while that closes holes.
-    g.stats.triangles_removed += LoopFiller(g).drop_stray_pieces();
-    constexpr int kPatchRounds = 3;
-    for (int round = 0; round < kPatchRounds && LoopFiller(g).patch_open_holes() > 0; ++round) {
-    }
+  // No hole of a tangle is filled, zipped or patched, and no point beside one is taken in.
+  mark_tangles(g);
+  constexpr int kRounds = 6;
+  for (int round = 0; round < kRounds; ++round) {
+    LoopFiller filler(g);
+    filler.run([&](double f) { report(kRoundsShare * (round + f) / kRounds); });
+    if (round + 1 == kRounds) break;
+    // In this order, spelled out: the operands of + may be evaluated either way round.
+    std::size_t removed = open_pinched_vertices(g);
+    removed += filler.widen_open_holes();
+    g.stats.triangles_removed += removed;
+    if (removed == 0) break;
+  }
+  // What stays open may be a strip between two pieces whose loops each count as a border.
+  // A strip zipped in part leaves short holes between the triangles that passed: a fill
+  // round, then the patching below.
+  if (LoopFiller(g).zip_parallel_loops() > 0)
+    LoopFiller(g).run([&](double) { report(kRoundsShare); });
+  // Stray pieces go before the patching (an island in a hole blocks its patch) and after it
+  // (widening a hole can cut a piece off); their points join the others left out. Patching
+  // one hole can free its neighbour (the faces a widened hole gave up were what blocked the
+  // other): patch again while that closes holes.
+  g.stats.triangles_removed += LoopFiller(g).drop_stray_pieces();
+  constexpr int kPatchRounds = 3;
+  for (int round = 0; round < kPatchRounds && LoopFiller(g).patch_open_holes() > 0; ++round) {
   }
   report(0.85);
   // Pieces count as joined through a shared vertex, so the pinches go first: a stray piece
@@ -353,13 +373,11 @@ void fill_loops(GrowthState &g, const std::function<void(double)> &tick) {
   // in the points a cut leaves out.
   cut_thin_handles(g, first_loop_face);
   report(0.9);
-  if (!tangled) {
-    if (g.params.take_in_points != 0) take_in_points(g);
-    LoopFiller(g).close_at_sharp_edges([&](double f) { report(0.95 + 0.05 * f); });
-    // The take-in can shorten a tunnel's waist to the length looked for (homer's mouth
-    // corner).
-    cut_narrow_tunnels(g, first_loop_face);
-  }
+  if (g.params.take_in_points != 0) take_in_points(g);
+  LoopFiller(g).close_at_sharp_edges([&](double f) { report(0.95 + 0.05 * f); });
+  // The take-in can shorten a tunnel's waist to the length looked for (homer's mouth
+  // corner).
+  cut_narrow_tunnels(g, first_loop_face);
   // The take-in and the round above add faces after the last drop: a bubble that stray points
   // closed among themselves goes now.
   g.stats.triangles_removed += LoopFiller(g).drop_stray_pieces(false);

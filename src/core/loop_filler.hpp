@@ -34,6 +34,7 @@ struct Loop {
   uint32_t piece = kNone;          // the component of the faces along it
   bool fillable = false;
   bool flat_cut = false;  // too wide, but lying in one cut of a contour stack (capped)
+  bool tangled = false;   // runs through a tangle (GrowthState::tangled): left as it is
 };
 
 // Every vertex of the loops with its loop, in a kd-tree: which loops pass near a point

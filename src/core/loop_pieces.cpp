@@ -113,7 +113,7 @@ std::size_t LoopFiller::zip_parallel_loops() {
   const LoopVertices near(loops_, g_.points.work);
   std::vector<uint32_t> partner(loops_.size(), kNone);
   for (uint32_t l = 0; l < loops_.size(); ++l)
-    if (!loops_[l].fillable) partner[l] = partner_loop(l, near);
+    if (!loops_[l].fillable && !loops_[l].tangled) partner[l] = partner_loop(l, near);
   std::size_t zipped = 0;
   for (uint32_t l = 0; l < loops_.size(); ++l) {
     const uint32_t p = partner[l];
@@ -165,7 +165,7 @@ uint32_t LoopFiller::partner_loop(uint32_t l, const LoopVertices &near) const {
       double nearest = reach2;
       for (const auto &[i, d2] : found) {
         const uint32_t other = near.loop[i];
-        if (other == l || loops_[other].piece == loops_[l].piece) continue;
+        if (other == l || loops_[other].tangled || loops_[other].piece == loops_[l].piece) continue;
         if (d2 < nearest || (d2 == nearest && other < partner)) {
           nearest = d2;
           partner = other;

@@ -300,9 +300,12 @@ void LoopFiller::classify_and_pool() {
       loop_of_vertex.emplace(a, l);
     }
     spacing /= double(n);
+    loop.piece = g_.mesh.component(face_along(loop.vertices));
+    // A loop's vertices are all on one piece of the mesh, so one of them tells.
+    loop.tangled = g_.in_tangle(loop.vertices.front());
+    if (loop.tangled) continue;
     const double width = loop_width(loop.vertices);
     const double hole_width = loop.hole_width = g_.params.hole_size * spacing;
-    loop.piece = g_.mesh.component(face_along(loop.vertices));
     // Narrow, or else small; a strip is narrow by its waists too, the spacing capped where
     // the loop runs among stray points: their own spacing would make a gap of any width among
     // them look narrow. The dearer tests come last: the waists take a quadratic number of
@@ -321,6 +324,7 @@ void LoopFiller::classify_and_pool() {
   std::vector<uint32_t> mark(g_.points.size(), kNone);
   for (uint32_t l = 0; l < loops_.size(); ++l) {
     Loop &loop = loops_[l];
+    if (loop.tangled) continue;
     loop.pool = loop.vertices;
     for (uint32_t v : loop.vertices) mark[v] = l;
     for (uint32_t v : loop.vertices) {
@@ -332,7 +336,7 @@ void LoopFiller::classify_and_pool() {
           if (!take_in || g_.nb.alone(p)) continue;
           mark[p] = l;
           loop.pool.push_back(p);
-        } else if (loop_of_vertex.count(p)) {
+        } else if (loop_of_vertex.count(p) && !g_.in_tangle(p)) {
           mark[p] = l;
           loop.outer.push_back(p);
         }

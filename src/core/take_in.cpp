@@ -59,7 +59,7 @@ class PointTaker {
       layers_allowed_ = layers_allowed;
       out.clear();
       for (uint32_t p = 0; p < g_.points.size(); ++p)
-        if (!g_.mesh.is_used(p)) out.push_back(p);
+        if (!g_.mesh.is_used(p) && !beside_tangle(p)) out.push_back(p);
       while (!out.empty()) {
         just_in.clear();
         for (std::size_t i = 0; i < out.size(); ++i) {
@@ -86,6 +86,17 @@ class PointTaker {
   }
 
  private:
+  // A point of a tangle (GrowthState::tangled; pinch opening can leave one out), or one whose
+  // nearest neighbours include a vertex of one, is part of it: no surface there to take it in.
+  bool beside_tangle(uint32_t p) const {
+    if (g_.tangled.empty()) return false;
+    if (g_.in_tangle(p)) return true;
+    const uint32_t *nb = g_.nb.of(p);
+    for (unsigned j = 0; j < std::min(kNearbyVertices, g_.nb.k); ++j)
+      if (g_.in_tangle(nb[j])) return true;
+    return false;
+  }
+
   // The spacing of the surface p would join: its own, but at most kIsolation times that of its
   // nearest neighbours. A stray point off the surface is as far from the surface as its own
   // spacing, so measuring its height in that unit would take it in as a spike.
