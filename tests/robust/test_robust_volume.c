@@ -77,6 +77,7 @@ static void test_surface_beside_a_volume(void **state) {
   const size_t ns = 10000, nc = 20000, n = ns + nc;
   double *xyz = (double *)malloc(3 * n * sizeof(double));
   uint64_t *edges = (uint64_t *)malloc(3 * 2 * ns * sizeof(uint64_t));
+  unsigned char *on_mesh = (unsigned char *)calloc(ns, 1);
   moa_ctx *ctx = NULL;
   moa_mesh mesh;
   moa_stats stats;
@@ -84,6 +85,7 @@ static void test_surface_beside_a_volume(void **state) {
   (void)state;
   assert_non_null(xyz);
   assert_non_null(edges);
+  assert_non_null(on_mesh);
   for (i = 0; i < ns; ++i) {
     const double z = 1.0 - 2.0 * ((double)i + 0.5) / (double)ns, r = sqrt(1.0 - z * z);
     const double turn = 2.399963229728653 * (double)i; /* the golden angle */
@@ -119,8 +121,10 @@ static void test_surface_beside_a_volume(void **state) {
     for (k = 0; k < 3; ++k) {
       const uint64_t a = t[k], b = t[(k + 1) % 3];
       edges[edge_count++] = a < b ? a << 32 | b : b << 32 | a;
+      on_mesh[t[k]] = 1;
     }
   }
+  for (i = 0; i < ns; ++i) assert_true(on_mesh[i]);
   assert_int_equal(sphere_faces, 2 * ns - 4); /* Euler: a closed sphere of ns vertices */
   qsort(edges, edge_count, sizeof *edges, compare_keys);
   for (i = 0; i < edge_count; i += 2) {
@@ -128,6 +132,7 @@ static void test_surface_beside_a_volume(void **state) {
     assert_true(i + 2 >= edge_count || edges[i + 2] != edges[i]);
   }
   free(edges);
+  free(on_mesh);
   moa_ctx_destroy(ctx);
 }
 
