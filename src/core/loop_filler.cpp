@@ -43,25 +43,19 @@ constexpr double kTangledVertices = 0.5;
 // separate (a noisy surface has patches where most vertices are pinched).
 void mark_tangles(GrowthState &g) {
   const uint32_t n = uint32_t(g.points.size());
-  DisjointSets pieces(n);
-  for (uint32_t f = 0; f < g.mesh.face_count(); ++f)
-    if (g.mesh.alive(f)) {
-      const Tri &t = g.mesh.stored(f);
-      pieces.join(t[0], t[1]);
-      pieces.join(t[1], t[2]);
-    }
+  const Pieces pieces(g.mesh, n);
   std::vector<uint32_t> used(n, 0), pinched(n, 0);
   bool any = false;
   for (uint32_t v = 0; v < n; ++v)
     if (g.mesh.is_used(v)) {
-      const uint32_t r = pieces.root(v);
+      const uint32_t r = pieces.of_vertex(v);
       ++used[r];
       pinched[r] += g.mesh.fan_count(v) >= 2;
     }
   std::vector<uint8_t> tangled(n, 0);
   for (uint32_t v = 0; v < n; ++v)
     if (g.mesh.is_used(v)) {
-      const uint32_t r = pieces.root(v);
+      const uint32_t r = pieces.of_vertex(v);
       tangled[v] = double(pinched[r]) > kTangledVertices * double(used[r]);
       any |= tangled[v] != 0;
     }
