@@ -7,7 +7,6 @@
 #include <stddef.h>
 #include <setjmp.h>
 #include <stdint.h>
-#include <math.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -18,6 +17,7 @@
 #include <cmocka.h>
 
 #include "moa/moa.h"
+#include "robust_clouds.h"
 
 #if defined(__SANITIZE_ADDRESS__)
 #define ROBUST_ASAN 1
@@ -37,17 +37,6 @@
       _exit(1);                                                \
     }                                                          \
   } while (0)
-
-static void fibonacci_sphere(double *xyz, size_t n) {
-  size_t i;
-  for (i = 0; i < n; ++i) {
-    const double y = 1.0 - 2.0 * ((double)i + 0.5) / (double)n, r = sqrt(1.0 - y * y);
-    const double t = 2.39996322972865332 * (double)i;
-    xyz[3 * i] = r * cos(t);
-    xyz[3 * i + 1] = y;
-    xyz[3 * i + 2] = r * sin(t);
-  }
-}
 
 static size_t address_space_bytes(void) {
   long pages = 0;
