@@ -344,14 +344,14 @@ void fill_loops(GrowthState &g, const std::function<void(double)> &tick) {
     g.stats.triangles_removed += removed;
     if (removed == 0) break;
   }
-  // What stays open may be a strip between two pieces whose loops each count as a border.
-  // A strip zipped in part leaves short holes between the triangles that passed: a fill
-  // round, then the patching below.
+  // What stays open may be a strip between two pieces whose loops each count as a border. A
+  // strip zipped in part leaves short holes between the triangles that passed: a fill round,
+  // then the patching below.
   if (LoopFiller(g).zip_parallel_loops() > 0)
     LoopFiller(g).run([&](double) { report(kRoundsShare); });
   // Stray pieces go before the patching (an island in a hole blocks its patch) and after it
-  // (widening a hole can cut a piece off); their points join the others left out. Patching
-  // one hole can free its neighbour (the faces a widened hole gave up were what blocked the
+  // (widening a hole can cut a piece off); their points join the others left out. Patching one
+  // hole can free its neighbour (the faces a widened hole gave up were what blocked the
   // other): patch again while that closes holes.
   g.stats.triangles_removed += LoopFiller(g).drop_stray_pieces();
   constexpr int kPatchRounds = 3;
@@ -369,8 +369,7 @@ void fill_loops(GrowthState &g, const std::function<void(double)> &tick) {
   report(0.9);
   if (g.params.take_in_points != 0) take_in_points(g);
   LoopFiller(g).close_at_sharp_edges([&](double f) { report(0.95 + 0.05 * f); });
-  // The take-in can shorten a tunnel's waist to the length looked for (homer's mouth
-  // corner).
+  // The take-in can shorten a tunnel's waist to the length looked for (homer's mouth corner).
   cut_narrow_tunnels(g, first_loop_face);
   // The take-in and the round above add faces after the last drop: a bubble that stray points
   // closed among themselves goes now.
