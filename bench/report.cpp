@@ -2,8 +2,10 @@
 // run_bench.sh's runs into
 //   RESULTS/results.tsv  one line per input and method (what bench/plot.py draws),
 //   RESULTS/latest.md    the full report, with the detail tables,
-//   BENCHMARKS           the top-level summary (BENCHMARKS.md): key figures, all results, plots.
-// Plots are linked when their PNG exists in RESULTS (run_bench.sh draws them between two calls).
+//   BENCHMARKS           the top-level summary (BENCHMARKS.md): key figures, all results, plots,
+//                        pictures.
+// Plots and pictures are linked when their PNG exists in RESULTS (run_bench.sh draws them
+// between two calls).
 //
 // Result files in WORK/results, per input NAME: NAME.METHOD.txt for each method of kMethods
 // (the runner's keys, then `moa_bench analyze`'s q_* and d_* keys), NAME.moa1.txt (libmoa with
@@ -509,6 +511,40 @@ void plots_section(std::ostream &md, const fs::path &results, const std::string 
   if (!any) md << "No plots this time (`bench/plot.py` needs python3-matplotlib).\n\n";
 }
 
+// The pictures run_bench.sh draws of every method's mesh for a few inputs (RESULTS/pictures/
+// NAME.METHOD.png, `moa render --highlight-defects`): one row per input, one column per method.
+void pictures_section(std::ostream &md, const Report &rep, const fs::path &results,
+                      const std::string &prefix) {
+  const fs::path dir = results / "pictures";
+  std::ostringstream rows;
+  for (const Row &row : rep.rows) {
+    const std::string name = text(row.input, "name");
+    std::string line = "| " + name + " |";
+    bool any = false;
+    for (const Method *m : rep.methods) {
+      const std::string file = name + "." + m->key + ".png";
+      if (fs::exists(dir / file)) {
+        line += " ![" + name + ", " + m->label + "](" + prefix + "pictures/" + file + ") |";
+        any = true;
+      } else {
+        line += " — |";
+      }
+    }
+    if (any) rows << line << "\n";
+  }
+  if (rows.str().empty()) return;
+  md << "## Pictures\n\n"
+        "Every method's mesh of a few inputs, drawn by `moa render --highlight-defects` from the "
+        "meshes of this run. Blue-grey: the side of a face its normal points to; sand: the other "
+        "side (a face turned against its neighbours, a closed surface facing inward, or the "
+        "inside seen through a hole); red: boundary edges; purple: faces on a non-manifold edge "
+        "or vertex, or crossing another face (decided exactly). \"—\": no mesh.\n\n| input |";
+  for (const Method *m : rep.methods) md << " " << m->label << " |";
+  md << "\n|---|";
+  for (std::size_t i = 0; i < rep.methods.size(); ++i) md << ":-:|";
+  md << "\n" << rows.str() << "\n";
+}
+
 // Observations drawn from the numbers, so that nobody has to read them off the tables.
 void observations(std::ostream &md, const Report &rep) {
   std::vector<std::string> notes;
@@ -713,6 +749,7 @@ int report_main(int argc, char **argv) {
   md << kMainNote;
   targets_section(md, rep);
   plots_section(md, results, to_results);
+  pictures_section(md, rep, results, to_results);
   all_results_section(md, rep);
   closing_sections(md, rep);
   write_file(benchmarks, md.str());

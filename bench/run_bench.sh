@@ -3,7 +3,7 @@
 # libraries are installed, writes the inputs, runs every method on every input (each run in its
 # own process, under a time limit, so each peak memory figure is that run's own), checks every
 # mesh with the same checker, and writes BENCHMARKS.md, bench/results/latest.md,
-# bench/results/results.tsv and the plots. See bench/README.md.
+# bench/results/results.tsv, the plots and pictures of the meshes. See bench/README.md.
 set -euo pipefail
 
 usage() {
@@ -84,11 +84,11 @@ if [[ $revision != unknown && -n $(git -C "$root" status --porcelain 2>/dev/null
 fi
 echo "== configure and build in $build"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DMOA_BUILD_BENCH=ON \
-  -DMOA_BUILD_TESTS=OFF -DMOA_BUILD_CLI=OFF -DMOA_BUILD_BINDINGS=OFF >"$work/logs/configure.log" 2>&1 ||
+  -DMOA_BUILD_TESTS=OFF -DMOA_BUILD_CLI=ON -DMOA_BUILD_BINDINGS=OFF >"$work/logs/configure.log" 2>&1 ||
   { cat "$work/logs/configure.log" >&2; exit 1; }
 grep 'bench:' "$work/logs/configure.log" || true
 cp "$build/bench/peers.tsv" "$work/peers.tsv"
-targets=(moa_bench)
+targets=(moa_bench moa_cli)  # the tool draws the pictures
 while IFS=$'\t' read -r peer built _; do
   [[ $peer != \#* && $built == 1 ]] && targets+=("$peer")
 done <"$work/peers.tsv"
@@ -237,6 +237,21 @@ done 3<"$work/inputs.tsv"
 echo "== report"
 mkdir -p "$results"
 rm -f "$results"/*.png
+rm -rf "$results/pictures"
+# Pictures of every method's mesh of these inputs (INPUT:VIEW), defects highlighted, for the
+# report: what the numbers mean, at a glance. A picture that fails is left out of it.
+pictures=(bunny00-vertices:front fandisk-vertices:iso kitten:iso building:iso)
+mkdir -p "$results/pictures"
+for entry in "${pictures[@]}"; do
+  name=${entry%%:*} view=${entry#*:}
+  for method in "${methods[@]}"; do
+    mesh="$work/meshes/$name.$method.ply"
+    [[ -s $mesh ]] || continue
+    timeout "$timeout_s" "$build/src/cli/moa" render "$mesh" -o "$results/pictures/$name.$method.png" \
+      --view "$view" --size 280 --highlight-defects --quiet >"$work/logs/$name.$method.picture.log" 2>&1 ||
+      echo "   picture of $name.$method failed (log $work/logs/$name.$method.picture.log)"
+  done
+done
 "$bench" report --work "$work" --results "$results" --benchmarks "$benchmarks" >/dev/null
 # Debian's python3-matplotlib belongs to /usr/bin/python3, which a python3 earlier in PATH
 # (pyenv, a virtualenv) may not see.
