@@ -247,9 +247,12 @@ for entry in "${pictures[@]}"; do
   for method in "${methods[@]}"; do
     mesh="$work/meshes/$name.$method.ply"
     [[ -s $mesh ]] || continue
-    timeout "$timeout_s" "$build/src/cli/moa" render "$mesh" -o "$results/pictures/$name.$method.png" \
-      --view "$view" --size 280 --highlight-defects --quiet >"$work/logs/$name.$method.picture.log" 2>&1 ||
+    picture="$results/pictures/$name.$method.png"
+    timeout "$timeout_s" "$build/src/cli/moa" render "$mesh" -o "$picture" --view "$view" \
+      --size 280 --highlight-defects --quiet >"$work/logs/$name.$method.picture.log" 2>&1 || {
+      rm -f "$picture"  # a time-out can leave half a file, which the report would show
       echo "   picture of $name.$method failed (log $work/logs/$name.$method.picture.log)"
+    }
   done
 done
 "$bench" report --work "$work" --results "$results" --benchmarks "$benchmarks" >/dev/null
