@@ -294,6 +294,38 @@ Points pipe_samples(double thickness, double length, std::size_t n, std::uint64_
   return sample_mesh(v, t, n, seed);
 }
 
+Points drilled_plate_samples(double bore, std::size_t n, std::uint64_t seed) {
+  constexpr double kThickness = 0.1;
+  const double centres[5][2] = {{0.2, 0.2}, {0.8, 0.2}, {0.5, 0.5}, {0.2, 0.8}, {0.8, 0.8}};
+  // Each draw picks a part by its area; the top and bottom count whole and refuse the points
+  // that fall in a bore, which leaves every part its share of the surface.
+  const double faces = 2.0, rim = 4 * kThickness, walls = 5 * 2 * k_pi * bore * kThickness;
+  Rng rng(seed);
+  Points p;
+  while (p.size() < 3 * n) {
+    const double part = rng.uniform(0, faces + rim + walls);
+    if (part < faces) {
+      const double x = rng.uniform(), y = rng.uniform();
+      bool in_bore = false;
+      for (const auto &c : centres) in_bore |= std::hypot(x - c[0], y - c[1]) < bore;
+      if (!in_bore) p.insert(p.end(), {x, y, part < faces / 2 ? 0.0 : kThickness});
+    } else if (part < faces + rim) {
+      const double t = rng.uniform(), z = rng.uniform(0, kThickness);
+      switch (rng.below(4)) {
+        case 0: p.insert(p.end(), {t, 0.0, z}); break;
+        case 1: p.insert(p.end(), {t, 1.0, z}); break;
+        case 2: p.insert(p.end(), {0.0, t, z}); break;
+        default: p.insert(p.end(), {1.0, t, z}); break;
+      }
+    } else {
+      const auto &c = centres[rng.below(5)];
+      const double a = rng.uniform(0, 2 * k_pi), z = rng.uniform(0, kThickness);
+      p.insert(p.end(), {c[0] + bore * std::cos(a), c[1] + bore * std::sin(a), z});
+    }
+  }
+  return p;
+}
+
 Points dumbbell_samples(double neck, std::size_t n, std::uint64_t seed) {
   constexpr double kBall = 0.6, kCentre = 1.0, kBlend = 0.05;
   // The radius of the surface of revolution at x: the larger of ball and neck, blended.

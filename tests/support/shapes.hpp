@@ -60,6 +60,10 @@ Points pipe_samples(double thickness, double length, std::size_t n, std::uint64_
 // A cube 2 * half on a side, centred on the origin, with walls `wall` thick: its outer and inner
 // faces (not oriented: only the points are used).
 Points hollow_box_samples(double half, double wall, std::size_t n, std::uint64_t seed);
+// A plate 1 x 1 x 0.1 with five round bores of radius `bore` through it (the five of a die),
+// sampled uniformly by area: flat faces, right-angled edges round the rim and the bores' mouths,
+// and genus 5.
+Points drilled_plate_samples(double bore, std::size_t n, std::uint64_t seed);
 // A dumbbell along x sampled uniformly (sample_mesh): balls of radius 0.6 centred at x = -1 and
 // x = 1, joined by a neck of radius `neck`, the joints rounded over about 0.05.
 Points dumbbell_samples(double neck, std::size_t n, std::uint64_t seed);
