@@ -311,12 +311,12 @@ Points drilled_plate_samples(double bore, std::size_t n, std::uint64_t seed) {
       if (!in_bore) p.insert(p.end(), {x, y, part < faces / 2 ? 0.0 : kThickness});
     } else if (part < faces + rim) {
       const double t = rng.uniform(), z = rng.uniform(0, kThickness);
-      switch (rng.below(4)) {
-        case 0: p.insert(p.end(), {t, 0.0, z}); break;
-        case 1: p.insert(p.end(), {t, 1.0, z}); break;
-        case 2: p.insert(p.end(), {0.0, t, z}); break;
-        default: p.insert(p.end(), {1.0, t, z}); break;
-      }
+      const std::uint64_t side = rng.below(4);  // y = 0, y = 1, x = 0, x = 1
+      const double at = side % 2 == 0 ? 0.0 : 1.0;
+      if (side < 2)
+        p.insert(p.end(), {t, at, z});
+      else
+        p.insert(p.end(), {at, t, z});
     } else {
       const auto &c = centres[rng.below(5)];
       const double a = rng.uniform(0, 2 * k_pi), z = rng.uniform(0, kThickness);
