@@ -301,8 +301,9 @@ void LoopFiller::classify_and_pool() {
     }
     spacing /= double(n);
     loop.piece = g_.mesh.component(face_along(loop.vertices));
-    // A loop's vertices are all on one piece of the mesh, so one of them tells.
-    loop.tangled = g_.in_tangle(loop.vertices.front());
+    // A loop that touches a tangle runs through it or along its edge.
+    loop.tangled = std::any_of(loop.vertices.begin(), loop.vertices.end(),
+                               [&](uint32_t v) { return g_.in_tangle(v); });
     if (loop.tangled) continue;
     const double width = loop_width(loop.vertices);
     const double hole_width = loop.hole_width = g_.params.hole_size * spacing;
