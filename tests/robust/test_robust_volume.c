@@ -75,35 +75,60 @@ static void test_volume_cloud_runs_in_bounded_memory(void **state) {
   assert_true(usage.ru_maxrss < PEAK_LIMIT_MB * 1024L);
 }
 
-/* A unit sphere of 10,000 points (a Fibonacci lattice, about 0.035 apart) and, a gap of ten
- * spacings away, 20,000 random points filling a unit cube at about the same spacing. */
-static void test_surface_beside_a_volume(void **state) {
-  const size_t ns = 10000, nc = 20000, n = ns + nc;
+/* Runs, on two threads, a unit sphere of ns points (a Fibonacci lattice) with nc random points
+ * filling the box of the given side whose lowest corner is `corner`. Returns the context, whose
+ * mesh and statistics are in *mesh and *stats. */
+static moa_ctx *run_sphere_and_box(size_t ns, size_t nc, double side, const double corner[3],
+                                   moa_mesh *mesh, moa_stats *stats) {
+  const size_t n = ns + nc;
   double *xyz = (double *)malloc(3 * n * sizeof(double));
-  uint64_t *edges = (uint64_t *)malloc(3 * 2 * ns * sizeof(uint64_t));
-  unsigned char *on_mesh = (unsigned char *)calloc(ns, 1);
   moa_ctx *ctx = NULL;
-  moa_mesh mesh;
-  moa_stats stats;
-  size_t i, sphere_faces = 0, edge_count = 0;
-  (void)state;
+  size_t i;
+  int k;
   assert_non_null(xyz);
-  assert_non_null(edges);
-  assert_non_null(on_mesh);
   fibonacci_sphere(xyz, ns);
   fill_random(xyz + 3 * ns, 3 * nc);
-  for (i = ns; i < n; ++i) {
-    xyz[3 * i] += 1.35;
-    xyz[3 * i + 1] -= 0.5;
-    xyz[3 * i + 2] -= 0.5;
-  }
+  for (i = ns; i < n; ++i)
+    for (k = 0; k < 3; ++k) xyz[3 * i + k] = side * xyz[3 * i + k] + corner[k];
   assert_int_equal(moa_ctx_create(&ctx), MOA_OK);
   assert_int_equal(moa_set_param(ctx, "threads", 2), MOA_OK);
   assert_int_equal(moa_set_points(ctx, xyz, n), MOA_OK);
   free(xyz);
   assert_int_equal(moa_run(ctx), MOA_OK);
-  assert_int_equal(moa_get_mesh(ctx, &mesh), MOA_OK);
-  assert_int_equal(moa_get_stats(ctx, &stats, sizeof stats), MOA_OK);
+  assert_int_equal(moa_get_mesh(ctx, mesh), MOA_OK);
+  assert_int_equal(moa_get_stats(ctx, stats, sizeof *stats), MOA_OK);
+  return ctx;
+}
+
+/* Asserts that each edge (a key a << 32 | b, a < b) of the list, one entry per face side,
+ * comes exactly twice. Sorts the list; returns the number of distinct edges. */
+static size_t assert_each_edge_twice(uint64_t *edges, size_t count) {
+  size_t i, distinct = 0;
+  qsort(edges, count, sizeof *edges, compare_keys);
+  for (i = 0; i < count; i += 2, ++distinct) {
+    assert_true(i + 1 < count && edges[i] == edges[i + 1]);
+    assert_true(i + 2 >= count || edges[i + 2] != edges[i]);
+  }
+  return distinct;
+}
+
+static uint64_t edge_key(uint64_t a, uint64_t b) { return a < b ? a << 32 | b : b << 32 | a; }
+
+/* A unit sphere of 10,000 points (about 0.035 apart) and, a gap of ten spacings away, 20,000
+ * random points filling a unit cube at about the same spacing. */
+static void test_surface_beside_a_volume(void **state) {
+  const size_t ns = 10000, nc = 20000, n = ns + nc;
+  const double corner[3] = {1.35, -0.5, -0.5};
+  uint64_t *edges = (uint64_t *)malloc(3 * 2 * ns * sizeof(uint64_t));
+  unsigned char *on_mesh = (unsigned char *)calloc(ns, 1);
+  moa_ctx *ctx;
+  moa_mesh mesh;
+  moa_stats stats;
+  size_t i, sphere_faces = 0, edge_count = 0;
+  (void)state;
+  assert_non_null(edges);
+  assert_non_null(on_mesh);
+  ctx = run_sphere_and_box(ns, nc, 1.0, corner, &mesh, &stats);
   print_message("loop module: %zu faces added\n", stats.triangles_loops);
   assert_true(stats.triangles_loops < n / 4);
   /* The sphere: no face joins it to the cube, and its own faces close it, every point on it,
@@ -117,18 +142,13 @@ static void test_surface_beside_a_volume(void **state) {
     ++sphere_faces;
     assert_true(sphere_faces <= 2 * ns - 4);
     for (k = 0; k < 3; ++k) {
-      const uint64_t a = t[k], b = t[(k + 1) % 3];
-      edges[edge_count++] = a < b ? a << 32 | b : b << 32 | a;
+      edges[edge_count++] = edge_key(t[k], t[(k + 1) % 3]);
       on_mesh[t[k]] = 1;
     }
   }
   for (i = 0; i < ns; ++i) assert_true(on_mesh[i]);
   assert_int_equal(sphere_faces, 2 * ns - 4); /* Euler: a closed sphere of ns vertices */
-  qsort(edges, edge_count, sizeof *edges, compare_keys);
-  for (i = 0; i < edge_count; i += 2) {
-    assert_true(i + 1 < edge_count && edges[i] == edges[i + 1]);
-    assert_true(i + 2 >= edge_count || edges[i + 2] != edges[i]);
-  }
+  assert_each_edge_twice(edges, edge_count);
   free(edges);
   free(on_mesh);
   moa_ctx_destroy(ctx);
@@ -137,33 +157,19 @@ static void test_surface_beside_a_volume(void **state) {
 /* The unit sphere of 10,000 points again, and 12,000 random points filling a box 0.8 wide
  * whose base cuts through the sphere's top at y = 0.9: clutter that touches the surface. */
 static void test_surface_with_a_volume_attached(void **state) {
-  const size_t ns = 10000, nc = 12000, n = ns + nc;
-  double *xyz = (double *)malloc(3 * n * sizeof(double));
+  const size_t ns = 10000, nc = 12000;
+  const double corner[3] = {-0.4, 0.9, -0.4};
   const size_t edge_room = 6 * ns; /* at most 3 ns edges on ns vertices, each in two faces */
   uint64_t *edges = (uint64_t *)malloc(edge_room * sizeof(uint64_t));
   unsigned char *on_mesh = (unsigned char *)calloc(ns, 1);
-  moa_ctx *ctx = NULL;
+  moa_ctx *ctx;
   moa_mesh mesh;
   moa_stats stats;
-  size_t i, edge_count = 0, far_edges = 0;
+  size_t i, edge_count = 0;
   (void)state;
-  assert_non_null(xyz);
   assert_non_null(edges);
   assert_non_null(on_mesh);
-  fibonacci_sphere(xyz, ns);
-  fill_random(xyz + 3 * ns, 3 * nc);
-  for (i = ns; i < n; ++i) {
-    xyz[3 * i] = 0.8 * xyz[3 * i] - 0.4;
-    xyz[3 * i + 1] = 0.8 * xyz[3 * i + 1] + 0.9;
-    xyz[3 * i + 2] = 0.8 * xyz[3 * i + 2] - 0.4;
-  }
-  assert_int_equal(moa_ctx_create(&ctx), MOA_OK);
-  assert_int_equal(moa_set_param(ctx, "threads", 2), MOA_OK);
-  assert_int_equal(moa_set_points(ctx, xyz, n), MOA_OK);
-  free(xyz);
-  assert_int_equal(moa_run(ctx), MOA_OK);
-  assert_int_equal(moa_get_mesh(ctx, &mesh), MOA_OK);
-  assert_int_equal(moa_get_stats(ctx, &stats, sizeof stats), MOA_OK);
+  ctx = run_sphere_and_box(ns, nc, 0.8, corner, &mesh, &stats);
   print_message("loop module: %zu faces added, %zu removed\n", stats.triangles_loops,
                 stats.triangles_removed);
   assert_true(stats.triangles_loops < nc / 4);
@@ -174,20 +180,17 @@ static void test_surface_with_a_volume_attached(void **state) {
     int k;
     for (k = 0; k < 3; ++k) {
       const uint32_t a = t[k], b = t[(k + 1) % 3];
-      if (a < ns && mesh.vertices[3 * a + 1] < 0.4) on_mesh[a] = 1;
-      if (a < ns && b < ns && mesh.vertices[3 * a + 1] < 0.4 && mesh.vertices[3 * b + 1] < 0.4) {
+      const int a_far = a < ns && mesh.vertices[3 * a + 1] < 0.4;
+      if (a_far) on_mesh[a] = 1;
+      if (a_far && b < ns && mesh.vertices[3 * b + 1] < 0.4) {
         assert_true(edge_count < edge_room);
-        edges[edge_count++] = a < b ? (uint64_t)a << 32 | b : (uint64_t)b << 32 | a;
+        edges[edge_count++] = edge_key(a, b);
       }
     }
   }
   for (i = 0; i < ns; ++i) assert_true(on_mesh[i] || mesh.vertices[3 * i + 1] >= 0.4);
-  qsort(edges, edge_count, sizeof *edges, compare_keys);
-  for (i = 0; i < edge_count; i += 2, ++far_edges) {
-    assert_true(i + 1 < edge_count && edges[i] == edges[i + 1]);
-    assert_true(i + 2 >= edge_count || edges[i + 2] != edges[i]);
-  }
-  assert_true(far_edges > 3 * ns / 2); /* 70 % of the sphere lies below y = 0.4 */
+  /* 70 % of the sphere lies below y = 0.4: about 21,000 edges */
+  assert_true(assert_each_edge_twice(edges, edge_count) > 3 * ns / 2);
   free(edges);
   free(on_mesh);
   moa_ctx_destroy(ctx);
