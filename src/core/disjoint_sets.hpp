@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 namespace moa {
@@ -25,6 +26,12 @@ class DisjointSets {
   void join(uint32_t a, uint32_t b) {
     const uint32_t rb = root(b);
     parent_[root(a)] = rb;
+  }
+  // Every element's root, indexed by element, handed over without a copy; the sets are empty
+  // afterwards (reset them to use them again).
+  std::vector<uint32_t> take_roots() {
+    for (uint32_t x = 0; x < parent_.size(); ++x) parent_[x] = root(x);
+    return std::move(parent_);
   }
 
  private:

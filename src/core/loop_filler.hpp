@@ -14,6 +14,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "core/disjoint_sets.hpp"
 #include "core/growth_state.hpp"
 #include "core/kd_tree.hpp"
 
@@ -77,29 +78,25 @@ std::unordered_map<uint32_t, std::size_t> count_live_faces(const MeshState &mesh
 // count as part of the other. Four bytes per point.
 class Pieces {
  public:
-  explicit Pieces(const MeshState &mesh, std::size_t points) : mesh_(mesh), parent_(points) {
-    for (uint32_t v = 0; v < parent_.size(); ++v) parent_[v] = v;
+  explicit Pieces(const MeshState &mesh, std::size_t points) : mesh_(mesh) {
+    DisjointSets sets(points);
     for (uint32_t f = 0; f < mesh.face_count(); ++f)
       if (mesh.alive(f)) {
         const Tri &t = mesh.stored(f);
-        parent_[root(t[1])] = root(t[0]);
-        parent_[root(t[2])] = root(t[0]);
+        sets.join(t[1], t[0]);
+        sets.join(t[2], t[0]);
       }
-    for (uint32_t v = 0; v < parent_.size(); ++v) parent_[v] = root(v);  // flat from here on
+    piece_ = sets.take_roots();  // each vertex's root: its piece
     faces_ = count_live_faces(mesh, [this](uint32_t f) { return of(f); });
   }
-  uint32_t of(uint32_t face) const { return parent_[mesh_.stored(face)[0]]; }
+  uint32_t of(uint32_t face) const { return piece_[mesh_.stored(face)[0]]; }
   // The piece of a vertex that has faces.
-  uint32_t of_vertex(uint32_t v) const { return parent_[v]; }
+  uint32_t of_vertex(uint32_t v) const { return piece_[v]; }
   std::size_t faces(uint32_t piece) const { return faces_.at(piece); }
 
  private:
-  uint32_t root(uint32_t x) {
-    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
-    return x;
-  }
   const MeshState &mesh_;
-  std::vector<uint32_t> parent_;
+  std::vector<uint32_t> piece_;                      // by vertex
   std::unordered_map<uint32_t, std::size_t> faces_;  // by piece: few pieces, one large
 };
 
