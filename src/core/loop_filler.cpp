@@ -51,20 +51,22 @@ constexpr unsigned kRegionNeighbors = 20;
 constexpr double kHotShare = 0.6;
 constexpr uint32_t kTangledRegion = 1000;
 
+// A vertex whose faces meet in several fans.
+bool pinched(const MeshState &mesh, uint32_t v) { return mesh.fan_count(v) >= 2; }
+
 // Marks, in `tangled`, the vertices of the regions of kTangledRegion or more hot vertices and
 // the neighbours of those. Returns whether there is one.
 bool mark_tangled_regions(const GrowthState &g, std::vector<uint8_t> &tangled) {
   const uint32_t n = uint32_t(g.points.size());
   const unsigned k = std::min(kRegionNeighbors, g.nb.k);
-  auto pinched = [&](uint32_t v) { return g.mesh.fan_count(v) >= 2; };
   std::vector<uint8_t> hot(n, 0);
   for (uint32_t v = 0; v < n; ++v) {
     if (!g.mesh.is_used(v) || tangled[v]) continue;
-    unsigned among = 1, count = pinched(v);
+    unsigned among = 1, count = pinched(g.mesh, v);
     const uint32_t *nb = g.nb.of(v);
     for (unsigned j = 0; j < k; ++j) {
       among += g.mesh.is_used(nb[j]);
-      count += pinched(nb[j]);
+      count += pinched(g.mesh, nb[j]);
     }
     hot[v] = double(count) > kHotShare * double(among);
   }
@@ -101,17 +103,17 @@ void mark_tangles(GrowthState &g) {
   bool any = false;
   {  // the pieces' arrays go before the regions' are made
     const Pieces pieces(g.mesh, n);
-    std::vector<uint32_t> used(n, 0), pinched(n, 0);
+    std::vector<uint32_t> used(n, 0), pinched_in(n, 0);  // by piece
     for (uint32_t v = 0; v < n; ++v)
       if (g.mesh.is_used(v)) {
         const uint32_t r = pieces.of_vertex(v);
         ++used[r];
-        pinched[r] += g.mesh.fan_count(v) >= 2;
+        pinched_in[r] += pinched(g.mesh, v);
       }
     for (uint32_t v = 0; v < n; ++v)
       if (g.mesh.is_used(v)) {
         const uint32_t r = pieces.of_vertex(v);
-        tangled[v] = double(pinched[r]) > kTangledVertices * double(used[r]);
+        tangled[v] = double(pinched_in[r]) > kTangledVertices * double(used[r]);
         any |= tangled[v] != 0;
       }
   }
