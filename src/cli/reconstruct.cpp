@@ -23,9 +23,9 @@ namespace moa::cli {
 const char *const kReconstructHelp =
     "Usage: moa reconstruct INPUT -o OUTPUT [options]\n"
     "\n"
-    "Reconstructs a triangle mesh from the points of INPUT (.xyz .txt .pts .ply .off .obj)\n"
-    "and writes it to OUTPUT (.ply .off .obj .stl). The mesh's vertices are all the input\n"
-    "points, in input order.\n"
+    "Reconstructs a triangle mesh from the points of INPUT (.xyz .txt .pts .csv .ply .off\n"
+    ".obj) and writes it to OUTPUT (.ply .off .obj .stl). The mesh's vertices are all the\n"
+    "input points, in input order.\n"
     "\n"
     "Options:\n"
     "  -o, --output FILE        the mesh to write (required)\n"

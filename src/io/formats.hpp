@@ -29,7 +29,8 @@ void read_stl_binary(const Source &source, MeshData &mesh);
 
 // Writers append a whole file to out; the mesh is already validated.
 using Triangles = std::vector<uint32_t>;
-void write_xyz(std::string &out, const std::vector<double> &xyz);
+// Columns separated by `separator`: a space, or a comma for .csv.
+void write_xyz(std::string &out, const std::vector<double> &xyz, char separator);
 void write_ply(std::string &out, const std::vector<double> &xyz, const Triangles *triangles,
                bool ascii);
 void write_off(std::string &out, const std::vector<double> &xyz, const Triangles &triangles);

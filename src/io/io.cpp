@@ -45,21 +45,34 @@ const char *format_name(Format format) {
   return "unknown";
 }
 
-Format format_from_path(const std::string &path) {
+namespace {
+
+constexpr const char *kExtensions = ".xyz .txt .pts .csv .ply .off .obj .stl";
+
+// The extension of a path's file name, lower case; fails when there is none.
+std::string extension_of(const std::string &path) {
   const size_t slash = path.find_last_of('/');
   const size_t dot = path.find_last_of('.');
   if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
-    fail(path, "no file extension to tell the format (.xyz .txt .pts .ply .off .obj .stl)");
+    fail(path, std::string("no file extension to tell the format (") + kExtensions + ")");
   std::string extension = path.substr(dot + 1);
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (extension == "xyz" || extension == "txt" || extension == "pts") return Format::Xyz;
+  return extension;
+}
+
+}  // namespace
+
+Format format_from_path(const std::string &path) {
+  const std::string extension = extension_of(path);
+  if (extension == "xyz" || extension == "txt" || extension == "pts" || extension == "csv")
+    return Format::Xyz;
   if (extension == "ply") return Format::Ply;
   if (extension == "off") return Format::Off;
   if (extension == "obj") return Format::Obj;
   if (extension == "stl") return Format::Stl;
-  fail(path, "unknown extension " + detail::quoted(path.substr(dot)) +
-                 " (expected .xyz .txt .pts .ply .off .obj .stl)");
+  fail(path, "unknown extension " + detail::quoted(path.substr(path.find_last_of('.'))) +
+                 " (expected " + kExtensions + ")");
 }
 
 std::vector<double> read_points(const std::string &path) {
@@ -117,7 +130,9 @@ void write_points(const std::string &path, const std::vector<double> &xyz, bool 
   validate(path, xyz, no_triangles);
   std::string out;
   switch (format) {
-    case Format::Xyz: detail::write_xyz(out, xyz); break;
+    case Format::Xyz:  // a .csv gets commas, so that spreadsheets split its columns
+      detail::write_xyz(out, xyz, extension_of(path) == "csv" ? ',' : ' ');
+      break;
     case Format::Ply: detail::write_ply(out, xyz, nullptr, ascii); break;
     case Format::Off: detail::write_off(out, xyz, no_triangles); break;
     case Format::Obj: detail::write_obj(out, xyz, no_triangles); break;

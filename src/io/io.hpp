@@ -23,17 +23,18 @@ struct MeshData {
   std::vector<uint32_t> triangles;  // 3 indices per triangle (polygons are fan-triangulated)
 };
 
-// The format named by a path's extension (case-insensitive: .xyz .txt .pts .ply .off .obj .stl).
-// Throws IoError for an unknown extension.
+// The format named by a path's extension (case-insensitive: .xyz .txt .pts .csv for XYZ, .ply
+// .off .obj .stl). Throws IoError for an unknown extension.
 Format format_from_path(const std::string &path);
 
 // "XYZ", "PLY", "OFF", "OBJ" or "STL", for messages.
 const char *format_name(Format format);
 
-// Reads the points of a file: XYZ (whitespace columns, extra columns and '#' comments ignored),
-// PLY (ASCII, binary little and big endian; float or double x y z; other properties and
-// elements ignored), and the vertices of OFF and OBJ. The content decides the format where it
-// can (a PLY or OFF header is recognised whatever the extension); a file whose content
+// Reads the points of a file: XYZ (columns separated by whitespace, commas or semicolons; a
+// first line of column names may say where x, y and z are; extra columns and '#' comments
+// ignored), PLY (ASCII, binary little and big endian; float or double x y z; other properties
+// and elements ignored), and the vertices of OFF and OBJ. The content decides the format where
+// it can (a PLY or OFF header is recognised whatever the extension); a file whose content
 // contradicts its extension is an error naming both.
 std::vector<double> read_points(const std::string &path);
 
@@ -45,8 +46,9 @@ MeshData read_mesh(const std::string &path);
 // it) for an extension without faces (.xyz) or a mesh whose indices or sizes are invalid.
 void write_mesh(const std::string &path, const MeshData &mesh, bool ascii = false);
 
-// Writes points (x y z each) in the format of the path's extension: XYZ, PLY (binary little
-// endian unless ascii; vertices only), OFF (no faces), OBJ. STL cannot hold points: IoError.
+// Writes points (x y z each) in the format of the path's extension: XYZ (comma-separated for
+// .csv), PLY (binary little endian unless ascii; vertices only), OFF (no faces), OBJ. STL
+// cannot hold points: IoError.
 void write_points(const std::string &path, const std::vector<double> &xyz, bool ascii = false);
 
 }  // namespace moa::io

@@ -3,6 +3,7 @@
 #include <sys/stat.h>
 
 #include <cstdio>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -95,6 +96,24 @@ void test_reconstruct_and_check(void **) {
     EXPECT_HAS(r.out, key);
 }
 
+// The same points exported as CloudCompare does it (a header line, commas, x y z after other
+// columns and out of order) give the same mesh, byte for byte.
+void test_reconstruct_from_csv(void **) {
+  const std::string xyz = write_sphere_points(path("plain.xyz"));
+  std::istringstream lines(read_file(xyz));
+  std::string csv = "//Intensity,Z,Y,X\n", x, y, z;
+  while (lines >> x >> y >> z) csv += "7," + z + "," + y + "," + x + "\n";
+  write_file(path("export.csv"), csv);
+  const std::string from_xyz = path("plain.ply"), from_csv = path("export.ply");
+  std::remove(from_csv.c_str());
+  Run r = moa("reconstruct -q " + quote(xyz) + " -o " + quote(from_xyz));
+  assert_int_equal(r.code, 0);
+  r = moa("reconstruct " + quote(path("export.csv")) + " -o " + quote(from_csv));
+  if (r.code != 0) fail_msg("reconstruct from .csv failed (%d): %s", r.code, r.err.c_str());
+  EXPECT_HAS(r.out, "800 points");
+  assert_true(read_file(from_csv) == read_file(from_xyz));
+}
+
 void test_check_known_meshes(void **) {
   const std::string tetra = path("tetra.off");
   write_file(tetra, "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 1 2 3\n3 0 1 3\n3 0 3 2\n");
@@ -149,6 +168,7 @@ int main(int argc, char **argv) {
       cmocka_unit_test(test_version_and_help),
       cmocka_unit_test(test_params),
       cmocka_unit_test(test_reconstruct_and_check),
+      cmocka_unit_test(test_reconstruct_from_csv),
       cmocka_unit_test(test_check_known_meshes),
       cmocka_unit_test(test_errors),
   };

@@ -26,10 +26,13 @@ const char *const xyz_header = "ply\nformat binary_little_endian 1.0\nelement ve
 void malformed_numbers(void **) {
   const std::string xyz = fixture("bad.xyz", "1 2 3\n# fine\n4 5 abc\n");
   EXPECT_IO_ERROR(read_points(xyz), "bad.xyz: line 3: 'abc' is not a number");
-  for (const char *bad : {"1.2.3", "1e", "0x10", "1,5", "--1", "1e5x", "."}) {
+  for (const char *bad : {"1.2.3", "1e", "0x10", "--1", "1e5x", "."}) {
     const std::string path = fixture("bad_number.xyz", std::string("1 2 ") + bad + "\n");
     EXPECT_IO_ERROR(read_points(path), "bad_number.xyz: line 1:", std::string("'") + bad + "'");
   }
+  // A comma makes the columns comma-separated: "1,5" is not split into two coordinates.
+  EXPECT_IO_ERROR(read_points(fixture("bad_number.xyz", "1 2 1,5\n")), "line 1:", "'1 2 1'",
+                  "decimals must be written with '.'");
   const std::string few = fixture("few.xyz", "1 2 3\n4 5\n");
   EXPECT_IO_ERROR(read_points(few), "few.xyz: line 2:", "at least 3 numbers", "found 2");
   const std::string off = fixture("bad.off", "OFF\n3 1 0\n0 0 0\n1 O 0\n0 1 0\n3 0 1 2\n");
@@ -44,6 +47,28 @@ void malformed_numbers(void **) {
   const std::string stl = fixture("bad.stl", "solid s\nfacet normal 0 0 1\nouter loop\n"
                                              "vertex 0 0 0\nvertex 1 0 0\nvertex 0 1 nan0\n");
   EXPECT_IO_ERROR(read_mesh(stl), "bad.stl: line 6: 'nan0' is not a number");
+}
+
+// Delimited columns fail as clearly as whitespace ones: decimal commas are never split into
+// two coordinates, an empty field never shifts the columns after it.
+void delimited_column_errors(void **) {
+  EXPECT_IO_ERROR(read_points(fixture("decimal_commas.csv", "1,5;2,25;3,0\n")),
+                  "decimal_commas.csv: line 1: '1,5' is not a number", "separated by ';'",
+                  "decimals must be written with '.'");
+  EXPECT_IO_ERROR(read_points(fixture("decimal_spaces.xyz", "1,5 2,25 3,0\n")),
+                  "decimal_spaces.xyz: line 1: '5 2' is not a number", "separated by ','");
+  EXPECT_IO_ERROR(read_points(fixture("empty_field.csv", "1,2,3\n4,,6\n")),
+                  "empty_field.csv: line 2: column 2 is empty");
+  EXPECT_IO_ERROR(read_points(fixture("short_row.csv", "1,2,3\n4,5\n")),
+                  "short_row.csv: line 2:", "at least 3 numbers", "found 2");
+  EXPECT_IO_ERROR(read_points(fixture("named_short.csv", "id,r,x,y,z\n1,0,2,3,4\n2,0,5,6\n")),
+                  "named_short.csv: line 3:", "at least 5 columns", "columns 3, 4 and 5",
+                  "found 4");
+  // Only the first line may be a header.
+  EXPECT_IO_ERROR(read_points(fixture("two_headers.xyz", "x y z\nu v w\n1 2 3\n")),
+                  "two_headers.xyz: line 2: 'u' is not a number");
+  EXPECT_IO_ERROR(read_points(fixture("header_only.csv", "x,y,z\n")), "header_only.csv:",
+                  "holds no points");
 }
 
 void ply_item_shape(void **) {
@@ -281,6 +306,7 @@ void empty_files(void **) {
 int main() {
   const CMUnitTest tests[] = {
       cmocka_unit_test(malformed_numbers),
+      cmocka_unit_test(delimited_column_errors),
       cmocka_unit_test(ply_item_shape),
       cmocka_unit_test(ply_header_errors),
       cmocka_unit_test(truncated_binary_ply),

@@ -53,6 +53,37 @@ void xyz_pts_count_line(void **) {
   assert_doubles(READ_POINTS(path), {1, 2, 3, 4, 5, 6});
 }
 
+// Spreadsheet and CloudCompare exports: commas or semicolons between the columns, with or
+// without spaces around them; the first line of numbers decides which.
+void xyz_comma_and_semicolon_columns(void **) {
+  const std::string csv = io_test::write_fixture(
+      "export.csv", "1.5,2,3,255,0,0\r\n 4 , -5e-1 ,6E2,,\n# a comment\n7,8,9\n");
+  assert_doubles(READ_POINTS(csv), {1.5, 2, 3, 4, -0.5, 600, 7, 8, 9});
+  const std::string semicolons = io_test::write_fixture("export.txt", "1;2;3\n4; 5; 6; 0.25\n");
+  assert_doubles(READ_POINTS(semicolons), {1, 2, 3, 4, 5, 6});
+  // Tabs stay whitespace: no comma or semicolon on the first line of numbers.
+  const std::string tabs = io_test::write_fixture("tabs.xyz", "1\t2\t3\n4\t5\t6\n");
+  assert_doubles(READ_POINTS(tabs), {1, 2, 3, 4, 5, 6});
+}
+
+// A first line of column names is skipped; where it names x, y and z (any case, quoted or
+// not, CloudCompare's "//" before the first), those columns are read.
+void xyz_header_names_columns(void **) {
+  struct Case {
+    const char *name, *text;
+    std::vector<double> expected;
+  };
+  const Case cases[] = {
+      {"cloudcompare.txt", "//X,Y,Z,R,G,B\n1,2,3,255,0,0\n4,5,6,0,0,255\n", {1, 2, 3, 4, 5, 6}},
+      {"normals_first.xyz", "nx ny nz x y z\n0 0 1 4 5 6\n", {4, 5, 6}},
+      {"quoted.csv", "\"Intensity\";\"Z\";\"Y\";\"X\"\n9;3;2;1\n", {1, 2, 3}},
+      {"unnamed.xyz", "# made by hand\neast north up\n1 2 3\n", {1, 2, 3}},
+      {"header_spaces_data_commas.csv", "x y z\n1,2,3\n", {1, 2, 3}},
+  };
+  for (const Case &c : cases)
+    assert_doubles(READ_POINTS(io_test::write_fixture(c.name, c.text)), c.expected);
+}
+
 void ply_ascii_with_other_elements(void **) {
   const std::string text =
       "ply\r\n"
@@ -247,6 +278,8 @@ int main() {
   const CMUnitTest tests[] = {
       cmocka_unit_test(xyz_variants),
       cmocka_unit_test(xyz_pts_count_line),
+      cmocka_unit_test(xyz_comma_and_semicolon_columns),
+      cmocka_unit_test(xyz_header_names_columns),
       cmocka_unit_test(ply_ascii_with_other_elements),
       cmocka_unit_test(ply_binary_both_endians),
       cmocka_unit_test(off_variants),

@@ -2,6 +2,7 @@
 // to float precision for STL.
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -100,14 +101,20 @@ void stl_merges_equal_corners(void **) {
 
 void points(void **) {
   const std::vector<double> xyz = awkward_octahedron().xyz;
-  for (const char *name : {"points.xyz", "points.txt", "points.pts", "points.ply", "points.off",
-                           "points.obj"}) {
+  for (const char *name : {"points.xyz", "points.txt", "points.pts", "points.csv", "points.ply",
+                           "points.off", "points.obj"}) {
     for (bool ascii : {false, true}) {
       const std::string path = io_test::temp_path(name);
       moa::io::write_points(path, xyz, ascii);
       assert_same_mesh(MeshData{xyz, {}}, MeshData{READ_POINTS(path), {}});
     }
   }
+  // A .csv gets commas between its columns, so that spreadsheets split them.
+  std::ifstream csv(io_test::temp_path("points.csv"));
+  std::string first_line;
+  assert_true(bool(std::getline(csv, first_line)));
+  assert_int_equal(std::count(first_line.begin(), first_line.end(), ','), 2);
+  assert_int_equal(std::count(first_line.begin(), first_line.end(), ' '), 0);
   EXPECT_IO_ERROR(moa::io::write_points(io_test::temp_path("points.stl"), xyz), "points.stl",
                   "STL");
 }
@@ -170,6 +177,7 @@ void format_names(void **) {
   assert_true(moa::io::format_from_path("a/b.c/points.XYZ") == moa::io::Format::Xyz);
   assert_true(moa::io::format_from_path("scan.pts") == moa::io::Format::Xyz);
   assert_true(moa::io::format_from_path("scan.txt") == moa::io::Format::Xyz);
+  assert_true(moa::io::format_from_path("export.CSV") == moa::io::Format::Xyz);
   assert_true(moa::io::format_from_path("m.Off") == moa::io::Format::Off);
   assert_true(moa::io::format_from_path("m.obj") == moa::io::Format::Obj);
   assert_true(moa::io::format_from_path("m.stl") == moa::io::Format::Stl);
