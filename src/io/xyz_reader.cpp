@@ -148,16 +148,23 @@ void read_xyz(const Source &source, std::vector<double> &xyz) {
   std::string_view line;
   Columns columns;
   char separator = 0;  // decided by the first line of numbers
-  bool first = true;
+  bool first = true, pts = false;
   std::vector<std::string_view> fields;
   while (next_data_line(lines, line)) {
-    if (first) {
-      first = false;
-      // A lone count on the first line is the header of the .pts variant.
+    // A lone count on the first line is the header of the .pts variant; a file of several
+    // scans has one before each.
+    if (first || pts) {
       Tokens tokens(line);
       std::string_view token;
       uint64_t count;
-      if (tokens.next(token) && parse_unsigned(token, count) && tokens.done()) continue;
+      if (tokens.next(token) && parse_unsigned(token, count) && tokens.done()) {
+        pts = true;
+        first = false;
+        continue;
+      }
+    }
+    if (first) {
+      first = false;
       if (columns.read_header(line)) continue;
     }
     if (separator == 0) separator = separator_of(line);

@@ -35,6 +35,9 @@ void malformed_numbers(void **) {
                   "decimals must be written with '.'");
   const std::string few = fixture("few.xyz", "1 2 3\n4 5\n");
   EXPECT_IO_ERROR(read_points(few), "few.xyz: line 2:", "at least 3 numbers", "found 2");
+  // A lone number is a count line only in a file that starts with one (.pts).
+  EXPECT_IO_ERROR(read_points(fixture("lone.xyz", "1 2 3\n4\n")), "lone.xyz: line 2:",
+                  "at least 3 numbers", "found 1");
   const std::string off = fixture("bad.off", "OFF\n3 1 0\n0 0 0\n1 O 0\n0 1 0\n3 0 1 2\n");
   EXPECT_IO_ERROR(read_points(off), "bad.off: line 4: 'O' is not a number");
   const std::string obj = fixture("bad.obj", "v 0 0 0\nv 1 0 zero\n");

@@ -51,6 +51,10 @@ void xyz_variants(void **) {
 void xyz_pts_count_line(void **) {
   const std::string path = io_test::write_fixture("scan.pts", "2\n1 2 3 40 255 0 0\n4 5 6 41 0 255 0\n");
   assert_doubles(READ_POINTS(path), {1, 2, 3, 4, 5, 6});
+  // Several scans in one file, each after its own count.
+  const std::string scans =
+      io_test::write_fixture("scans.pts", "2\n1 2 3 40\n4 5 6 41\n1\n7 8 9 42\n");
+  assert_doubles(READ_POINTS(scans), {1, 2, 3, 4, 5, 6, 7, 8, 9});
 }
 
 // Spreadsheet and CloudCompare exports: commas or semicolons between the columns, with or
