@@ -22,9 +22,10 @@ PlyPlan make_plan(const std::string &path, const PlyHeader &header, bool want_fa
   if (vertex == elements.end()) fail(path, "the PLY header declares no vertex element");
   plan.vertex_element = static_cast<size_t>(vertex - elements.begin());
   plan.last_element = plan.vertex_element;
-  const char *const axes[] = {"x", "y", "z"};
+  const char *const axes[] = {"x", "y", "z"}, *const upper_axes[] = {"X", "Y", "Z"};
   for (int axis = 0; axis < 3; ++axis) {
-    const int p = vertex->find(axes[axis]);
+    int p = vertex->find(axes[axis]);
+    if (p < 0) p = vertex->find(upper_axes[axis]);  // some scanners' software writes X Y Z
     if (p < 0 || vertex->properties[static_cast<size_t>(p)].is_list)
       fail_at_line(path, vertex->line,
                    std::string("the vertex element has no '") + axes[axis] + "' property");

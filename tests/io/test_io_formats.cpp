@@ -276,6 +276,18 @@ void ply_without_faces(void **) {
   assert_int_equal(mesh.triangles.size(), 0);
 }
 
+// Coordinates named in upper case; lower case wins where a file has both.
+void ply_upper_case_coordinates(void **) {
+  const std::string upper = io_test::write_fixture(
+      "upper.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty double X\n"
+                   "property double Y\nproperty double Z\nend_header\n1 2 3\n");
+  assert_doubles(READ_POINTS(upper), {1, 2, 3});
+  const std::string both = io_test::write_fixture(
+      "both.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float X\nproperty float x\n"
+                  "property float y\nproperty float z\nend_header\n9 1 2 3\n");
+  assert_doubles(READ_POINTS(both), {1, 2, 3});
+}
+
 }  // namespace
 
 int main() {
@@ -291,6 +303,7 @@ int main() {
       cmocka_unit_test(stl_ascii),
       cmocka_unit_test(stl_binary_starting_with_solid),
       cmocka_unit_test(ply_without_faces),
+      cmocka_unit_test(ply_upper_case_coordinates),
   };
   return cmocka_run_group_tests(tests, io_test::setup_temp_dir, io_test::remove_temp_dir);
 }
