@@ -202,11 +202,18 @@ void write_stats(const Options &o, const moa_ctx *ctx, const moa_stats &s, size_
     throw CliError(kExitOutput, o.stats + ": cannot write: " + std::strerror(errno));
 }
 
+// "1 triangle", "2 triangles".
+std::string counted(size_t n, const char *one, const char *many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
 void print_summary(const Options &o, const moa_stats &s, size_t points, double run_ms) {
-  std::printf("%s: %zu points -> %zu triangles, %zu boundary edges (%zu open loops), %zu of "
-              "%zu points used; reconstruction %.1f ms (",
-              o.input.c_str(), points, s.triangles, s.boundary_edges, s.boundary_loops_after,
-              s.used_points, s.unique_points, run_ms);
+  std::printf("%s: %s -> %s, %s (%s), %zu of %zu points used; reconstruction %.1f ms (",
+              o.input.c_str(), counted(points, "point", "points").c_str(),
+              counted(s.triangles, "triangle", "triangles").c_str(),
+              counted(s.boundary_edges, "boundary edge", "boundary edges").c_str(),
+              counted(s.boundary_loops_after, "open loop", "open loops").c_str(), s.used_points,
+              s.unique_points, run_ms);
   for (int i = 0; i < MOA_STAGE_COUNT; ++i)
     std::printf("%s%s %.1f", i ? ", " : "", moa_stage_name(moa_stage(i)), s.stage_ms[i]);
   std::printf(" ms) on %u thread%s; wrote %s.\n", s.threads, s.threads == 1 ? "" : "s",

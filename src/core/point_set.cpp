@@ -98,7 +98,8 @@ PointSet prepare_points(const double *xyz, std::size_t count,
   if (unique.size() < 3)
     throw Error(MOA_ERROR_INVALID_INPUT,
                 "only " + std::to_string(unique.size()) +
-                    " distinct points after merging duplicates; at least 3 are needed");
+                    (unique.size() == 1 ? " distinct point" : " distinct points") +
+                    " after merging duplicates; at least 3 are needed");
 
   Vec3 lo = point_at(xyz, unique[0]), hi = lo;
   for (uint32_t i : unique) {

@@ -114,6 +114,15 @@ void test_reconstruct_from_csv(void **) {
   assert_true(read_file(from_csv) == read_file(from_xyz));
 }
 
+// The summary counts in words that agree with the numbers.
+void test_summary_of_one_triangle(void **) {
+  write_file(path("triangle.xyz"), "0 0 0\n1 0 0\n0 1 0\n");
+  const Run r = moa("reconstruct " + quote(path("triangle.xyz")) + " -o " +
+                    quote(path("triangle.ply")));
+  assert_int_equal(r.code, 0);
+  EXPECT_HAS(r.out, "3 points -> 1 triangle, 3 boundary edges (1 open loop), 3 of 3 points used");
+}
+
 void test_check_known_meshes(void **) {
   const std::string tetra = path("tetra.off");
   write_file(tetra, "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 1 2 3\n3 0 1 3\n3 0 3 2\n");
@@ -169,6 +178,7 @@ int main(int argc, char **argv) {
       cmocka_unit_test(test_params),
       cmocka_unit_test(test_reconstruct_and_check),
       cmocka_unit_test(test_reconstruct_from_csv),
+      cmocka_unit_test(test_summary_of_one_triangle),
       cmocka_unit_test(test_check_known_meshes),
       cmocka_unit_test(test_errors),
   };

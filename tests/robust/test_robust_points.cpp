@@ -49,7 +49,8 @@ void too_few_points(void **) {
 }
 
 void identical_points(void **) {
-  EXPECT_REJECTED(repeated(1, 2, 3, 3), MOA_ERROR_INVALID_INPUT, "only 1 distinct", "duplicates");
+  EXPECT_REJECTED(repeated(1, 2, 3, 3), MOA_ERROR_INVALID_INPUT, "only 1 distinct point after",
+                  "duplicates");
   EXPECT_REJECTED(repeated(-7.5, 1e6, 0, 1000), MOA_ERROR_INVALID_INPUT, "only 1 distinct");
   Points two = repeated(0, 0, 0, 50);
   const Points other = repeated(0, 0, 1, 50);
