@@ -120,16 +120,20 @@ CrossingIndex::CrossingIndex(const PointSet &points, double cell_size)
 CrossingIndex::~CrossingIndex() { release(); }
 
 void CrossingIndex::release() {
-  if (scene_) rtcReleaseScene(static_cast<RTCScene>(scene_));
-  scene_ = nullptr;
-  committed_ = 0;
+  set_aside();
   std::vector<float>().swap(vertices_);
   tested_.release();
   std::vector<uint32_t>().swap(found_);
+}
+
+void CrossingIndex::set_aside() {
+  if (scene_) rtcReleaseScene(static_cast<RTCScene>(scene_));
+  scene_ = nullptr;
+  committed_ = 0;
+  grid_.release();
   std::vector<uint32_t>().swap(oversized_);
   std::vector<uint32_t>().swap(scene_corners_);
   std::vector<uint32_t>().swap(scene_faces_);
-  grid_.release();
 }
 
 void CrossingIndex::bounds(const Tri &t, Vec3 &lo, Vec3 &hi) const {

@@ -42,6 +42,9 @@ class CrossingIndex {
   // t's bounding box in the coordinates the index tests, padded as every broad-phase box is.
   void bounds(const Tri &t, Vec3 &lo, Vec3 &hi) const;
 
+  // Frees the Embree scene and the grid of recent faces for a while (their memory is wanted
+  // elsewhere); no query may follow until add_all builds them again.
+  void set_aside();
   // Frees the Embree scene and the index's buffers once the mesh is complete; no query may
   // follow.
   void release();
