@@ -171,17 +171,19 @@ struct Sample {
 
 // The inputs, in the order of the report. Inputs made from one mesh are adjacent.
 const Sample kSamples[] = {
-    {"bunny00", Kind::Vertices, 0, false},      {"bunny00", Kind::Uniform, 10000, false},
-    {"bunny00", Kind::Uniform, 100000, false},  {"bunny00", Kind::Uniform, 1000000, true},
-    {"bunny00", Kind::Noisy, 10000, false},     {"bunny00", Kind::Noisy, 100000, false},
-    {"elephant", Kind::Vertices, 0, false},     {"elephant", Kind::Uniform, 10000, false},
-    {"elephant", Kind::Uniform, 100000, false}, {"fandisk", Kind::Vertices, 0, false},
-    {"fandisk", Kind::Uniform, 10000, false},   {"fandisk", Kind::Uniform, 100000, false},
-    {"fandisk", Kind::Noisy, 100000, false},    {"knot2", Kind::Vertices, 0, false},
-    {"knot2", Kind::Uniform, 10000, false},     {"eight", Kind::Vertices, 0, false},
-    {"homer", Kind::Vertices, 0, false},        {"sphere966", Kind::Vertices, 0, false},
-    {"mushroom", Kind::Vertices, 0, false},     {"cow", Kind::Vertices, 0, false},
-    {"kitten.xyz", Kind::File, 0, false},       {"building.ply", Kind::File, 0, false},
+    {"bunny00", Kind::Vertices, 0, false},       {"bunny00", Kind::Uniform, 10000, false},
+    {"bunny00", Kind::Uniform, 100000, false},   {"bunny00", Kind::Uniform, 1000000, true},
+    {"bunny00", Kind::Noisy, 10000, false},      {"bunny00", Kind::Noisy, 100000, false},
+    {"elephant", Kind::Vertices, 0, false},      {"elephant", Kind::Uniform, 10000, false},
+    {"elephant", Kind::Uniform, 100000, false},  {"elephant", Kind::Uniform, 1000000, true},
+    {"fandisk", Kind::Vertices, 0, false},       {"fandisk", Kind::Uniform, 10000, false},
+    {"fandisk", Kind::Uniform, 100000, false},   {"fandisk", Kind::Uniform, 1000000, true},
+    {"fandisk", Kind::Noisy, 100000, false},     {"knot2", Kind::Vertices, 0, false},
+    {"knot2", Kind::Uniform, 10000, false},      {"knot2", Kind::Uniform, 100000, false},
+    {"eight", Kind::Vertices, 0, false},         {"homer", Kind::Vertices, 0, false},
+    {"homer", Kind::Uniform, 100000, false},     {"sphere966", Kind::Vertices, 0, false},
+    {"mushroom", Kind::Vertices, 0, false},      {"cow", Kind::Vertices, 0, false},
+    {"kitten.xyz", Kind::File, 0, false},        {"building.ply", Kind::File, 0, false},
 };
 
 std::string count_label(size_t count) {
