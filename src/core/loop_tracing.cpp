@@ -13,7 +13,7 @@
 namespace moa {
 namespace {
 
-// Loops longer than this are borders unless the solid setting closes everything: measuring
+// Loops longer than this are borders unless the solid setting makes every loop a hole: measuring
 // their width costs a quadratic number of distances.
 constexpr std::size_t kMaxMeasuredLoop = 4096;
 // A loop's waist joins two of its vertices whose path along the loop is at least this many

@@ -69,8 +69,8 @@ const ParamRow kRows[] = {
      "its width",
      0, 1e9, false, &Params::hole_size},
     {"solid",
-     "1 closes every hole whatever its size (the paper's solid models); 0 keeps large "
-     "borders open",
+     "1 fills every hole whatever its size (the paper's solid models), leaving open only one "
+     "that no filling passes the judgment for; 0 keeps large borders open",
      0, 1, true, &Params::solid},
     {"take_in_points", "1 lets the loop module take in points Algorithm 1 left out", 0, 1, true,
      &Params::take_in_points},

@@ -1,7 +1,9 @@
 // Property tests on open patches: the contract (C1-C6), consistent stats, and a single disk
 // (one boundary loop, Euler characteristic 1) that uses every point; the true border stays open.
+// With solid=1 the same borders, and the outlines of a box's faces, close.
 #include "core_harness.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 // cmocka last: its macros (fail, ...) clash with names in the standard headers.
@@ -113,6 +115,54 @@ const Case &holed_torus_short_rim_case() {
   return c;
 }
 
+// The same borders with `solid=1` (the paper's solid models): every hole closes, whatever its
+// size. The hemisphere's rim is as wide as the surface, the holes in the sphere and the torus
+// a dozen spacings and more across; each must come out closed with its genus.
+moa::Params solid_params() {
+  moa::Params p;
+  p.solid = 1;
+  return p;
+}
+
+const Case &hemisphere_solid_case() {
+  static const Case c =
+      make_case("hemisphere, solid=1", shuffled(hemisphere(1000), 23), 0, solid_params());
+  return c;
+}
+
+const Case &holed_sphere_solid_case() {
+  static const Case c =
+      make_case("random sphere with a round hole, solid=1",
+                outside_ball(sphere_random(10000, 1.0, 26), 0, 0, 1, 0.35), 0, solid_params());
+  return c;
+}
+
+const Case &holed_torus_solid_case() {
+  static const Case c =
+      make_case("random torus with a round hole, solid=1", holed_torus(28), 0, solid_params());
+  return c;
+}
+
+// A unit cube whose faces hold points only within 0.08 of their edges, as the vertices of a
+// CAD model's flat faces lie along their outlines: each face's middle is a hole about 20
+// spacings across, which stays open by default (a border by its width) and closes with
+// solid=1.
+const Case &outlined_box_solid_case() {
+  static const Case c = [] {
+    Rng rng(29);
+    Points p;
+    while (p.size() < 3 * 6000) {
+      double q[3] = {rng.uniform(), rng.uniform(), rng.uniform()};
+      const std::size_t axis = rng.below(3);
+      q[axis] = double(rng.below(2));
+      const double u = q[(axis + 1) % 3], v = q[(axis + 2) % 3];
+      if (std::min({u, 1 - u, v, 1 - v}) < 0.08) p.insert(p.end(), {q[0], q[1], q[2]});
+    }
+    return make_case("box outlined on its faces, solid=1", p, 0, solid_params());
+  }();
+  return c;
+}
+
 // One piece with one boundary loop and Euler characteristic -1 (a torus with a hole), every
 // point used.
 std::string holed_torus_failure(const Case &c) {
@@ -148,6 +198,10 @@ MOA_CONTRACT_TESTS(flat_grid)
 MOA_CONTRACT_TESTS(flat_grid_tenths)
 MOA_CONTRACT_TESTS(hemisphere)
 MOA_CONTRACT_TESTS(saddle)
+MOA_CONTRACT_TESTS(hemisphere_solid)
+MOA_CONTRACT_TESTS(holed_sphere_solid)
+MOA_CONTRACT_TESTS(holed_torus_solid)
+MOA_CONTRACT_TESTS(outlined_box_solid)
 
 static void test_flat_grid_disk(void **) { MOA_EXPECT(disk_failure(flat_grid_case())); }
 static void test_flat_grid_tenths_disk(void **) { MOA_EXPECT(disk_failure(flat_grid_tenths_case())); }
@@ -163,6 +217,18 @@ static void test_holed_torus_keeps_its_hole(void **) {
 static void test_holed_torus_short_rim_keeps_its_hole(void **) {
   MOA_EXPECT(holed_torus_failure(holed_torus_short_rim_case()));
 }
+static void test_hemisphere_solid_closed(void **) {
+  MOA_EXPECT(closed_failure(hemisphere_solid_case(), 0));
+}
+static void test_holed_sphere_solid_closed(void **) {
+  MOA_EXPECT(closed_failure(holed_sphere_solid_case(), 0));
+}
+static void test_holed_torus_solid_closed(void **) {
+  MOA_EXPECT(closed_failure(holed_torus_solid_case(), 1));
+}
+static void test_outlined_box_solid_closed(void **) {
+  MOA_EXPECT(closed_failure(outlined_box_solid_case(), 0));
+}
 
 int main(void) {
   const struct CMUnitTest tests[] = {
@@ -177,6 +243,14 @@ int main(void) {
       MOA_CONTRACT_ENTRIES(holed_torus),      cmocka_unit_test(test_holed_torus_keeps_its_hole),
       MOA_CONTRACT_ENTRIES(holed_torus_short_rim),
       cmocka_unit_test(test_holed_torus_short_rim_keeps_its_hole),
+      MOA_CONTRACT_ENTRIES(hemisphere_solid),
+      cmocka_unit_test(test_hemisphere_solid_closed),
+      MOA_CONTRACT_ENTRIES(holed_sphere_solid),
+      cmocka_unit_test(test_holed_sphere_solid_closed),
+      MOA_CONTRACT_ENTRIES(holed_torus_solid),
+      cmocka_unit_test(test_holed_torus_solid_closed),
+      MOA_CONTRACT_ENTRIES(outlined_box_solid),
+      cmocka_unit_test(test_outlined_box_solid_closed),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
