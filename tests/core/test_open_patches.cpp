@@ -144,9 +144,9 @@ const Case &holed_torus_solid_case() {
 }
 
 // A unit cube whose faces hold points only within 0.08 of their edges, as the vertices of a
-// CAD model's flat faces lie along their outlines: each face's middle is a hole about 20
-// spacings across, which stays open by default (a border by its width) and closes with
-// solid=1.
+// CAD model's flat faces lie along their outlines: each face's middle is a hole 0.84 across,
+// about 50 spacings (0.017 apart), which stays open by default (a border by its width) and
+// closes with solid=1.
 const Case &outlined_box_solid_case() {
   static const Case c = [] {
     Rng rng(29);

@@ -1,0 +1,103 @@
+#!/usr/bin/env bash
+# Meshes that no test and no benchmark input is made from: the vertices of every mesh of
+# 300-50,000 vertices in CGAL's demo data (Debian's libcgal-demo), reconstructed by libmoa and,
+# when its runner is built, by CGAL's advancing front. `moa check` looks at each result and at
+# each mesh the vertices came from; the report puts them side by side. See bench/README.md.
+set -euo pipefail
+
+usage() {
+  cat <<'EOF'
+Usage: bench/demo_meshes.sh [options]
+  --build DIR    build directory (default /tmp/build-bench, shared with run_bench.sh)
+  --work DIR     the meshes, results and logs (default /tmp/moa-demo-meshes)
+  --out FILE     the report (default bench/results/demo_meshes.md)
+  --timeout S    seconds allowed to one run (default 300)
+  --jobs N       parallel build jobs (default: nproc)
+Needs libcgal-demo (its data archive); installs it with apt-get when run as root.
+EOF
+}
+
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build=/tmp/build-bench
+work=/tmp/moa-demo-meshes
+out="$root/bench/results/demo_meshes.md"
+timeout_s=300
+jobs=$(nproc)
+while (($#)); do
+  case $1 in
+    --build) build=$2; shift ;;
+    --work) work=$2; shift ;;
+    --out) out=$2; shift ;;
+    --timeout) timeout_s=$2; shift ;;
+    --jobs) jobs=$2; shift ;;
+    -h|--help) usage; exit 0 ;;
+    *) echo "demo_meshes.sh: unknown argument $1" >&2; usage >&2; exit 2 ;;
+  esac
+  shift
+done
+
+archive=/usr/share/doc/libcgal-dev/data.tar.gz
+if [[ ! -f $archive ]]; then
+  if ((EUID == 0)); then
+    apt-get install -y libcgal-demo >/dev/null
+  else
+    echo "demo_meshes.sh: $archive is missing; install libcgal-demo (apt-get install libcgal-demo)" >&2
+    exit 1
+  fi
+fi
+
+rm -rf "$work/meshes" "$work/results" "$work/logs"
+mkdir -p "$work/meshes" "$work/results" "$work/logs"
+tar -xzf "$archive" -C "$work/meshes" --strip-components=2 --wildcards 'data/meshes/*.off'
+
+echo "== configure and build in $build"
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DMOA_BUILD_BENCH=ON \
+  -DMOA_BUILD_TESTS=OFF -DMOA_BUILD_CLI=ON -DMOA_BUILD_BINDINGS=OFF >"$work/logs/configure.log" 2>&1 ||
+  { cat "$work/logs/configure.log" >&2; exit 1; }
+targets=(moa_cli)
+cgal=0
+if grep -q $'^cgal_afront\t1\t' "$build/bench/peers.tsv"; then
+  targets+=(cgal_afront)
+  cgal=1
+fi
+cmake --build "$build" --target "${targets[@]}" -j "$jobs" >"$work/logs/build.log" 2>&1 ||
+  { tail -n 30 "$work/logs/build.log" >&2; exit 1; }
+moa="$build/src/cli/moa"
+
+# The vertex count is the first number after the OFF keyword (comments and blank lines aside).
+vertex_count() {
+  awk '/^[[:space:]]*(#|$)/ {next} {sub(/^[[:space:]]*[A-Z]*OFF/, ""); if (NF) {print $1; exit}}' "$1"
+}
+
+names=()
+for mesh in "$work"/meshes/*.off; do
+  n=$(vertex_count "$mesh")
+  [[ $n =~ ^[0-9]+$ ]] && ((n >= 300 && n <= 50000)) && names+=("$(basename "$mesh" .off)")
+done
+echo "== ${#names[@]} meshes of 300-50,000 vertices"
+
+revision=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)
+if [[ $revision != unknown && -n $(git -C "$root" status --porcelain 2>/dev/null) ]]; then
+  revision="$revision with uncommitted changes"
+fi
+for name in "${names[@]}"; do
+  mesh="$work/meshes/$name.off" res="$work/results/$name"
+  "$moa" check "$mesh" --json >"$res.reference.json" 2>"$work/logs/$name.reference.log" || true
+  if timeout "$timeout_s" "$moa" reconstruct "$mesh" -o "$res.moa.ply" --stats "$res.moa.stats.json" \
+    --quiet 2>"$work/logs/$name.moa.log"; then
+    "$moa" check "$res.moa.ply" --json >"$res.moa.json" 2>>"$work/logs/$name.moa.log" || true
+  fi
+  if ((cgal)); then
+    start=$(date +%s.%N)
+    if timeout "$timeout_s" "$build/bench/cgal_afront" "$mesh" --mesh "$res.cgal.off" \
+      >"$work/logs/$name.cgal.log" 2>&1; then
+      awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN {print b - a}' >"$res.cgal.seconds"
+      "$moa" check "$res.cgal.off" --json >"$res.cgal.json" 2>>"$work/logs/$name.cgal.log" || true
+    fi
+  fi
+  echo "   $name"
+done
+
+mkdir -p "$(dirname "$out")"
+python3 "$root/bench/demo_meshes_report.py" "$work/results" "$revision" "${names[@]}" >"$out"
+echo "== report: $out"
