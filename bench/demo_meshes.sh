@@ -77,7 +77,9 @@ done
 echo "== ${#names[@]} meshes of 300-50,000 vertices"
 
 revision=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)
-if [[ $revision != unknown && -n $(git -C "$root" status --porcelain 2>/dev/null) ]]; then
+# The reports in bench/results are outputs, not code.
+if [[ $revision != unknown &&
+  -n $(git -C "$root" status --porcelain -- . ':!bench/results' 2>/dev/null) ]]; then
   revision="$revision with uncommitted changes"
 fi
 for name in "${names[@]}"; do
