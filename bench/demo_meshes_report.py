@@ -39,6 +39,8 @@ def main():
     results, revision, names = sys.argv[1], sys.argv[2], sys.argv[3:]
     rows = []
     closed_refs = same_moa = same_cgal = contract_moa = contract_cgal = ran_cgal = 0
+    # Closed references that hold the contract themselves: the surfaces a valid result can equal.
+    valid_refs = valid_moa = valid_cgal = 0
     for name in names:
         at = lambda suffix: os.path.join(results, name + suffix)
         ref, moa, cgal = load(at(".reference.json")), load(at(".moa.json")), load(at(".cgal.json"))
@@ -47,6 +49,10 @@ def main():
         if ref is None:
             continue
         closed_refs += ref["closed"]
+        valid = ref["closed"] and ref["contract"]["ok"]
+        valid_refs += valid
+        valid_moa += valid and moa is not None and shape(moa) == shape(ref)
+        valid_cgal += valid and cgal is not None and shape(cgal) == shape(ref)
         same_moa += moa is not None and shape(moa) == shape(ref)
         contract_moa += moa is not None and moa["contract"]["ok"]
         if cgal_ran:
@@ -76,6 +82,9 @@ def main():
     print("- The same surface as the reference (closed or not, components, Euler characteristic):"
           " libmoa %d of %d, CGAL's advancing front %d of %d." % (same_moa, len(rows), same_cgal,
                                                                  ran_cgal))
+    print("- Of the %d closed references that hold the contract themselves (the others cross"
+          " themselves or are not manifold): the same surface from libmoa on %d, from CGAL's"
+          " advancing front on %d." % (valid_refs, valid_moa, valid_cgal))
     print("- Contract C1-C5 held: libmoa %d of %d, CGAL's advancing front %d of %d.\n"
           % (contract_moa, len(rows), contract_cgal, ran_cgal))
     head = ["mesh", "vertices", "reference", "comp.", "genus", "C1-C5", "libmoa", "comp.",
