@@ -82,9 +82,10 @@ def main():
     print("- The same surface as the reference (closed or not, components, Euler characteristic):"
           " libmoa %d of %d, CGAL's advancing front %d of %d." % (same_moa, len(rows), same_cgal,
                                                                  ran_cgal))
-    print("- Of the %d closed references that hold the contract themselves (the others cross"
-          " themselves or are not manifold): the same surface from libmoa on %d, from CGAL's"
-          " advancing front on %d." % (valid_refs, valid_moa, valid_cgal))
+    print("- Of the %d closed references that hold the contract themselves (the other closed ones"
+          " break it: they cross themselves, or their faces are not oriented consistently): the"
+          " same surface from libmoa on %d, from CGAL's advancing front on %d."
+          % (valid_refs, valid_moa, valid_cgal))
     print("- Contract C1-C5 held: libmoa %d of %d, CGAL's advancing front %d of %d.\n"
           % (contract_moa, len(rows), contract_cgal, ran_cgal))
     head = ["mesh", "vertices", "reference", "comp.", "genus", "C1-C5", "libmoa", "comp.",
