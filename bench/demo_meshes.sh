@@ -77,9 +77,11 @@ done
 echo "== ${#names[@]} meshes of 300-50,000 vertices"
 
 revision=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)
-# The reports in bench/results are outputs, not code.
-if [[ $revision != unknown &&
-  -n $(git -C "$root" status --porcelain -- . ':!bench/results' 2>/dev/null) ]]; then
+# Changes count only where they can change the results: the library, the tool, the build and
+# this script (not the reports in bench/results, nor the documentation).
+if [[ $revision != unknown && -n $(git -C "$root" status --porcelain -- src include cmake \
+  CMakeLists.txt bench/CMakeLists.txt bench/cgal_afront.cpp bench/demo_meshes.sh \
+  bench/demo_meshes_report.py 2>/dev/null) ]]; then
   revision="$revision with uncommitted changes"
 fi
 for name in "${names[@]}"; do
