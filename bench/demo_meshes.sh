@@ -92,6 +92,7 @@ for name in "${names[@]}"; do
     "$moa" check "$res.moa.ply" --json >"$res.moa.json" 2>>"$work/logs/$name.moa.log" || true
   fi
   if ((cgal)); then
+    : >"$res.cgal.tried"  # a run that fails or times out leaves only this
     start=$(date +%s.%N)
     if timeout "$timeout_s" "$build/bench/cgal_afront" "$mesh" --mesh "$res.cgal.off" \
       >"$work/logs/$name.cgal.log" 2>&1; then

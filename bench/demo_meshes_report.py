@@ -2,9 +2,10 @@
 """The report of bench/demo_meshes.sh: each mesh's reference beside libmoa's and CGAL's results.
 
 Usage: demo_meshes_report.py RESULTS_DIR REVISION NAME... > report.md
-RESULTS_DIR holds NAME.reference.json, NAME.moa.json, NAME.moa.stats.json, NAME.cgal.json and
-NAME.cgal.seconds as the script wrote them (`moa check --json`, `moa reconstruct --stats`); a
-missing file is a run that failed or timed out.
+RESULTS_DIR holds NAME.reference.json, NAME.moa.json, NAME.moa.stats.json, NAME.cgal.tried,
+NAME.cgal.json and NAME.cgal.seconds as the script wrote them (`moa check --json`, `moa
+reconstruct --stats`); a missing file is a run that failed or timed out (CGAL's runner was
+tried where NAME.cgal.tried exists).
 """
 import datetime
 import json
@@ -45,7 +46,7 @@ def main():
         at = lambda suffix: os.path.join(results, name + suffix)
         ref, moa, cgal = load(at(".reference.json")), load(at(".moa.json")), load(at(".cgal.json"))
         stats = load(at(".moa.stats.json"))
-        cgal_ran = os.path.exists(at(".cgal.seconds")) or os.path.exists(at(".cgal.json"))
+        cgal_ran = os.path.exists(at(".cgal.tried"))
         if ref is None:
             continue
         closed_refs += ref["closed"]
