@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Meshes that no test and no benchmark input is made from: the vertices of every mesh of
-# 300-50,000 vertices in CGAL's demo data (Debian's libcgal-demo), reconstructed by libmoa and,
-# when its runner is built, by CGAL's advancing front. `moa check` looks at each result and at
-# each mesh the vertices came from; the report puts them side by side. See bench/README.md.
+# 300-50,000 vertices in CGAL's demo data (Debian's libcgal-demo) but those of the shared data
+# (which come from there too), reconstructed by libmoa and, when its runner is built, by CGAL's
+# advancing front. `moa check` looks at each result and at each mesh the vertices came from; the
+# report puts them side by side. See bench/README.md.
 set -euo pipefail
 
 usage() {
@@ -13,6 +14,7 @@ Usage: bench/demo_meshes.sh [options]
   --out FILE     the report (default bench/results/demo_meshes.md)
   --timeout S    seconds allowed to one run (default 300)
   --jobs N       parallel build jobs (default: nproc)
+  --data DIR     the shared data, whose meshes are left out (default ../shared/data)
 Needs libcgal-demo (its data archive); installs it with apt-get when run as root.
 EOF
 }
@@ -23,6 +25,7 @@ work=/tmp/moa-demo-meshes
 out="$root/bench/results/demo_meshes.md"
 timeout_s=300
 jobs=$(nproc)
+data="$root/../shared/data"
 while (($#)); do
   case $1 in
     --build) build=$2; shift ;;
@@ -30,6 +33,7 @@ while (($#)); do
     --out) out=$2; shift ;;
     --timeout) timeout_s=$2; shift ;;
     --jobs) jobs=$2; shift ;;
+    --data) data=$2; shift ;;
     -h|--help) usage; exit 0 ;;
     *) echo "demo_meshes.sh: unknown argument $1" >&2; usage >&2; exit 2 ;;
   esac
@@ -69,12 +73,13 @@ vertex_count() {
   awk '/^[[:space:]]*(#|$)/ {next} {sub(/^[[:space:]]*[A-Z]*OFF/, ""); if (NF) {print $1; exit}}' "$1"
 }
 
-names=()
+names=() shared=()
 for mesh in "$work"/meshes/*.off; do
-  n=$(vertex_count "$mesh")
-  [[ $n =~ ^[0-9]+$ ]] && ((n >= 300 && n <= 50000)) && names+=("$(basename "$mesh" .off)")
+  n=$(vertex_count "$mesh") name=$(basename "$mesh" .off)
+  [[ $n =~ ^[0-9]+$ ]] && ((n >= 300 && n <= 50000)) || continue
+  if [[ -f $data/meshes/$name.off ]]; then shared+=("$name"); else names+=("$name"); fi
 done
-echo "== ${#names[@]} meshes of 300-50,000 vertices"
+echo "== ${#names[@]} meshes of 300-50,000 vertices (left out, as in the shared data: ${shared[*]:-none})"
 
 revision=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)
 # Changes count only where they can change the results: the library, the tool, the build and
@@ -104,5 +109,6 @@ for name in "${names[@]}"; do
 done
 
 mkdir -p "$(dirname "$out")"
-python3 "$root/bench/demo_meshes_report.py" "$work/results" "$revision" "${names[@]}" >"$out"
+SHARED_LEFT_OUT="${shared[*]:-}" python3 "$root/bench/demo_meshes_report.py" "$work/results" \
+  "$revision" "${names[@]}" >"$out"
 echo "== report: $out"

@@ -78,7 +78,13 @@ def main():
     print("CGAL's demo data (Debian's `libcgal-demo`) are reconstructed by libmoa (default")
     print("parameters) and by CGAL's advancing front (its defaults); `moa check` looks at every")
     print("result and at the mesh the vertices came from (the reference). Some references are open,")
-    print("some are not manifold or cross themselves (their contract column says FAIL).\n")
+    print("some are not manifold or cross themselves (their contract column says FAIL).")
+    shared = os.environ.get("SHARED_LEFT_OUT", "").split()
+    if shared:
+        print("The meshes also in the shared data, which the tests and the benchmark use, are left"
+              " out: %s.\n" % ", ".join(shared))
+    else:
+        print()
     print("- %d meshes, %d of them closed." % (len(rows), closed_refs))
     print("- The same surface as the reference (closed or not, components, Euler characteristic):"
           " libmoa %d of %d, CGAL's advancing front %d of %d." % (same_moa, len(rows), same_cgal,
