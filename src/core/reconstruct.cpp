@@ -58,7 +58,7 @@ std::unique_ptr<KdIndex> smooth_if_noisy(PointSet &points, const Params &params,
   auto index = std::make_unique<KdIndex>(points.work);
   if (params.smoothing == 0) return index;
   for (int pass = 0; pass < kMaxSmoothingPasses; ++pass) {
-    NoiseEstimate noise = estimate_noise(*index);
+    NoiseEstimate noise = estimate_noise(*index, pass > 0);
     const bool forced = pass == 0 && params.smoothing == 2;
     if (!noise.noisy && !forced) break;
     const unsigned k = noise.smoothing_k ? noise.smoothing_k : kForcedSmoothingK;

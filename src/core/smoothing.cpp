@@ -87,15 +87,18 @@ constexpr double kSheetBand = 0.6;
 constexpr double kPartRoughness = 0.1;
 constexpr double kPartDrop = 0.6;
 constexpr double kNoisyPartShare = 0.15;
-// A point counts so only if its 20 nearest are also flatter than its 10 nearest: noise keeps a
-// neighbourhood's thickness as it widens, curvature makes it grow faster than the width. The
-// vertices of clean meshes sampled coarsely and unevenly (CGAL's dino, elk, bones and Chinese
-// dragon: limbs and toes a few spacings round, spacings varying tenfold) are rough at 10 points
-// where the surface bends tightly, and flatter at 80-320 points that follow a limb's length:
-// 15-25 % of their sample points looked noisy, and smoothed over 80-320 points dino's 3,916
-// vertices kept 820 boundary edges in 17 pieces (76 in 4 unsmoothed). With this test 3-7 % do.
-// On 20,000-point samples of bunny, elephant and homer with noise of 0.3-0.7 spacings on half of
-// them the share falls by at most 3 points (from 11-32 %).
+// In the caller's points, a point counts so only if its 20 nearest are also flatter than its 10
+// nearest: noise keeps a neighbourhood's thickness as it widens, curvature makes it grow faster
+// than the width. The vertices of clean meshes sampled coarsely and unevenly (CGAL's dino, elk,
+// bones and Chinese dragon: limbs and toes a few spacings round, spacings varying tenfold) are
+// rough at 10 points where the surface bends tightly, and flatter at 80-320 points that follow a
+// limb's length: 15-25 % of their sample points looked noisy, and smoothed over 80-320 points
+// dino's 3,916 vertices kept 820 boundary edges in 17 pieces (76 in 4 unsmoothed). With this test
+// 3-7 % do. On 20,000-point samples of bunny, elephant and homer with noise of 0.3-0.7 spacings
+// on half of them the share falls by at most 3 points (from 11-32 %). Not in a copy smoothed
+// once already: a pass takes the finest scatter away, and what it leaves need not be flatter at
+// 20 points (fandisk with noise of 0.7 spacings on half of it needs a second pass to close; with
+// this test on the smoothed copy too, it stopped after one and kept 38 boundary edges).
 
 // Clouds sampled along lines (neighbors.hpp: contour stacks, scanner stripes) whose points
 // scatter off their lines: the scatter that matters is set against the short steps along a
@@ -311,7 +314,8 @@ void set_scales(const ScaleMedians &m, bool finest_alone, NoiseEstimate &est) {
 
 // The cloud is noisy in part when enough of its sample points look noisy on their own (see
 // kNoisyPartShare); then the smoothing scale is the one at which those look flattest.
-void noisy_in_part(const std::vector<double> &ratios, std::size_t samples, NoiseEstimate &est) {
+void noisy_in_part(const std::vector<double> &ratios, std::size_t samples, bool smoothed,
+                   NoiseEstimate &est) {
   std::vector<char> noisy(samples, 0);
   std::size_t measured = 0, noisy_count = 0;
   for (std::size_t s = 0; s < samples; ++s) {
@@ -322,7 +326,7 @@ void noisy_in_part(const std::vector<double> &ratios, std::size_t samples, Noise
     double large = small;
     for (std::size_t c = kSmallScales; c < kScaleCount; ++c)
       if (r[c] >= 0) large = std::min(large, r[c]);
-    noisy[s] = small > kPartRoughness && large < kPartDrop * small && r[1] < r[0];
+    noisy[s] = small > kPartRoughness && large < kPartDrop * small && (smoothed || r[1] < r[0]);
     noisy_count += noisy[s];
   }
   if (measured == 0 || double(noisy_count) < kNoisyPartShare * double(measured)) return;
@@ -356,7 +360,7 @@ bool noisy_thin_walls(const ScaleMedians &m, NoiseEstimate &est) {
 
 }  // namespace
 
-NoiseEstimate estimate_noise(const KdIndex &index) {
+NoiseEstimate estimate_noise(const KdIndex &index, bool smoothed) {
   const std::vector<Vec3> &work = index.points();
   NoiseEstimate est;
   const std::size_t n = work.size();
@@ -424,7 +428,8 @@ NoiseEstimate estimate_noise(const KdIndex &index) {
   // spacings apart, 0.023 and 0.031 at 10 and 20 points, 0.79 at 40, were smoothed into one
   // surface zigzagging between them).
   const bool far_sheet_at_40 = medians[1] >= 0 && medians[2] > kFarSheetJump * medians[1];
-  if (!est.noisy && !finest_alone && !far_sheet_at_40) noisy_in_part(ratios, samples, est);
+  if (!est.noisy && !finest_alone && !far_sheet_at_40)
+    noisy_in_part(ratios, samples, smoothed, est);
   return est;
 }
 

@@ -33,8 +33,9 @@ struct NoiseEstimate {
 // Looks at a fixed sample of points at several neighbourhood sizes. Thickness over width grows
 // with the neighbourhood on a clean surface (curvature) and shrinks on a noisy one (the scatter
 // is the same at every size while the width grows). In a cloud sampled along lines it also
-// looks at each line's thickness. Deterministic.
-NoiseEstimate estimate_noise(const KdIndex &index);
+// looks at each line's thickness. Deterministic. `smoothed`: the points are a smoothed copy
+// already (a later pass), not the caller's.
+NoiseEstimate estimate_noise(const KdIndex &index, bool smoothed = false);
 
 // Each point moved onto the quadric fitted (least squares, in its PCA frame) to the ball
 // around it that holds about k points of a surface; except where whole regions moved several
