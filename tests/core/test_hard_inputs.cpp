@@ -190,21 +190,6 @@ std::string twin_torus_failure(const Case &c) {
   return "";
 }
 
-// The median distance from a point to its nearest neighbour (brute force: small clouds only).
-double median_nearest_distance(const Points &p) {
-  const std::size_t n = p.size() / 3;
-  std::vector<double> nearest(n, HUGE_VAL);
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = 0; j < n; ++j)
-      if (i != j) {
-        const double dx = p[3 * i] - p[3 * j], dy = p[3 * i + 1] - p[3 * j + 1],
-                     dz = p[3 * i + 2] - p[3 * j + 2];
-        nearest[i] = std::min(nearest[i], std::sqrt(dx * dx + dy * dy + dz * dz));
-      }
-  std::nth_element(nearest.begin(), nearest.begin() + n / 2, nearest.end());
-  return nearest[n / 2];
-}
-
 // Copies of the points of `p` whose x is below `below_x`, each moved by `fraction` of the median
 // nearest-neighbour distance in a random direction, after all of `p`: a second scan of that
 // region, registered to within a fraction of the spacing.

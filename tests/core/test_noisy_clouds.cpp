@@ -185,10 +185,7 @@ void test_noisy_clouds_are_noisy(void **) {
 // x > 0 only. The estimate's medians fell on the clean half, which looked clean.
 Points half_noisy_torus(double sigma, std::uint64_t seed) {
   Points p = torus_random(8000, 1.0, 0.4, seed);
-  Rng rng(seed);
-  for (std::size_t i = 0; i < p.size(); i += 3)
-    if (p[i] > 0)
-      for (int k = 0; k < 3; ++k) p[i + k] += sigma * rng.normal();
+  add_noise_beyond(p, 0, sigma, seed);
   return p;
 }
 

@@ -9,7 +9,6 @@
 #include <set>
 #include <string>
 
-#include "core/kd_tree.hpp"
 #include "core_harness.hpp"
 #include "io/io.hpp"
 #include "support/shapes.hpp"
@@ -198,28 +197,10 @@ void elephant_noisy_thin_parts_closed(void **) {
 // is near what the smoothing can take.)
 Points half_noisy_fandisk(std::uint64_t seed) {
   Points p = sample_of("fandisk.off", 20000, 0, seed);
-  std::vector<moa::Vec3> at;
-  std::vector<double> xs, nearest;
-  for (std::size_t i = 0; i < p.size(); i += 3) {
-    at.push_back({p[i], p[i + 1], p[i + 2]});
-    xs.push_back(p[i]);
-  }
-  const moa::KdIndex index(at);
-  for (const moa::Vec3 &q : at) {
-    uint32_t idx[2];
-    double d2[2];
-    index.nearest(q, 2, idx, d2);
-    nearest.push_back(std::sqrt(d2[1]));
-  }
-  auto median = [](std::vector<double> v) {
-    std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
-    return v[v.size() / 2];
-  };
-  const double sigma = 0.7 * median(nearest), mid = median(xs);
-  Rng rng(seed);
-  for (std::size_t i = 0; i < p.size(); i += 3)
-    if (p[i] > mid)
-      for (int k = 0; k < 3; ++k) p[i + k] += sigma * rng.normal();
+  std::vector<double> xs;
+  for (std::size_t i = 0; i < p.size(); i += 3) xs.push_back(p[i]);
+  std::nth_element(xs.begin(), xs.begin() + std::ptrdiff_t(xs.size() / 2), xs.end());
+  add_noise_beyond(p, xs[xs.size() / 2], 0.7 * median_nearest_distance(p), seed);
   return p;
 }
 

@@ -376,6 +376,42 @@ void add_noise(Points &p, double fraction_of_diagonal, std::uint64_t seed) {
   for (double &v : p) v += sigma * rng.normal();
 }
 
+void add_noise_beyond(Points &p, double x, double sigma, std::uint64_t seed) {
+  Rng rng(seed);
+  for (std::size_t i = 0; i < p.size(); i += 3)
+    if (p[i] > x)
+      for (int k = 0; k < 3; ++k) p[i + k] += sigma * rng.normal();
+}
+
+double median_nearest_distance(const Points &p) {
+  const std::size_t n = p.size() / 3;
+  if (n < 2) return 0;
+  // Points in order of x; each looks at its neighbours in that order until the gap in x alone
+  // exceeds the nearest distance found (with room for rounding, so the result is the exact
+  // minimum over all other points).
+  std::vector<std::size_t> order(n);
+  for (std::size_t i = 0; i < n; ++i) order[i] = i;
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return p[3 * a] < p[3 * b]; });
+  std::vector<double> nearest(n, HUGE_VAL);
+  for (std::size_t r = 0; r < n; ++r) {
+    const std::size_t i = order[r];
+    auto look = [&](std::size_t j) {
+      const double dx = p[3 * i] - p[3 * j], dy = p[3 * i + 1] - p[3 * j + 1],
+                   dz = p[3 * i + 2] - p[3 * j + 2];
+      if (std::fabs(dx) > nearest[i] * (1 + 1e-12)) return false;
+      nearest[i] = std::min(nearest[i], std::sqrt(dx * dx + dy * dy + dz * dz));
+      return true;
+    };
+    for (std::size_t s = r + 1; s < n && look(order[s]); ++s) {
+    }
+    for (std::size_t s = r; s > 0 && look(order[s - 1]); --s) {
+    }
+  }
+  std::nth_element(nearest.begin(), nearest.begin() + std::ptrdiff_t(n / 2), nearest.end());
+  return nearest[n / 2];
+}
+
 Points density_gradient(const Points &p, double ratio, std::uint64_t seed) {
   Rng rng(seed);
   double lo = p[0], hi = p[0];

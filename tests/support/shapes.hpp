@@ -70,6 +70,11 @@ Points dumbbell_samples(double neck, std::size_t n, std::uint64_t seed);
 
 // Helpers.
 void add_noise(Points &p, double fraction_of_diagonal, std::uint64_t seed);
+// Gaussian noise of standard deviation `sigma` on each coordinate of the points whose x exceeds
+// `x`, the others left as they are: a region scanned from farther off.
+void add_noise_beyond(Points &p, double x, double sigma, std::uint64_t seed);
+// The median distance from a point to its nearest other point (exact; a duplicate counts as 0).
+double median_nearest_distance(const Points &p);
 // Keeps each point with a chance that grows with the square of its x across the bounding box,
 // from 1 / ratio at the low end to 1 at the high end: a density `ratio` times higher on one side,
 // as a scanner leaves it on the near and far sides of an object.
