@@ -49,16 +49,18 @@ def main():
         cgal_ran = os.path.exists(at(".cgal.tried"))
         if ref is None:
             continue
+        # A failed run's shape is None, never the reference's.
+        moa_same, cgal_same = shape(moa) == shape(ref), shape(cgal) == shape(ref)
         closed_refs += ref["closed"]
         valid = ref["closed"] and ref["contract"]["ok"]
         valid_refs += valid
-        valid_moa += valid and moa is not None and shape(moa) == shape(ref)
-        valid_cgal += valid and cgal is not None and shape(cgal) == shape(ref)
-        same_moa += moa is not None and shape(moa) == shape(ref)
+        valid_moa += valid and moa_same
+        valid_cgal += valid and cgal_same
+        same_moa += moa_same
         contract_moa += moa is not None and moa["contract"]["ok"]
         if cgal_ran:
             ran_cgal += 1
-            same_cgal += cgal is not None and shape(cgal) == shape(ref)
+            same_cgal += cgal_same
             contract_cgal += cgal is not None and cgal["contract"]["ok"]
         seconds = None
         if os.path.exists(at(".cgal.seconds")):
