@@ -61,19 +61,6 @@ Points box_surface(std::size_t n, std::uint64_t seed) {
   return p;
 }
 
-struct Corner {
-  double x, y, z;
-};
-Corner corner(const Points &p, std::uint32_t v) { return {p[3 * v], p[3 * v + 1], p[3 * v + 2]}; }
-
-// The angle at c facing the segment ab.
-double angle_at(const Corner &c, const Corner &a, const Corner &b) {
-  const double ux = a.x - c.x, uy = a.y - c.y, uz = a.z - c.z;
-  const double vx = b.x - c.x, vy = b.y - c.y, vz = b.z - c.z;
-  const double cx = uy * vz - uz * vy, cy = uz * vx - ux * vz, cz = ux * vy - uy * vx;
-  return std::atan2(std::sqrt(cx * cx + cy * cy + cz * cz), ux * vx + uy * vy + uz * vz);
-}
-
 // Interior edges whose two opposite angles sum past 180 degrees by more than `margin` radians.
 std::size_t non_delaunay_edges(const Points &p, const std::vector<std::uint32_t> &tris,
                                double margin) {
@@ -87,8 +74,8 @@ std::size_t non_delaunay_edges(const Points &p, const std::vector<std::uint32_t>
   std::size_t count = 0;
   for (const auto &[edge, across] : opposite) {
     if (across.size() != 2) continue;
-    const Corner a = corner(p, edge.first), b = corner(p, edge.second);
-    const double sum = angle_at(corner(p, across[0]), a, b) + angle_at(corner(p, across[1]), a, b);
+    const double sum = angle_at(p, across[0], edge.first, edge.second) +
+                       angle_at(p, across[1], edge.first, edge.second);
     if (sum > kPi + margin) ++count;
   }
   return count;
@@ -96,14 +83,7 @@ std::size_t non_delaunay_edges(const Points &p, const std::vector<std::uint32_t>
 
 // Share of the triangles whose smallest angle is below `degrees`.
 double share_below(const Points &p, const std::vector<std::uint32_t> &tris, double degrees) {
-  std::size_t below = 0;
-  for (std::size_t f = 0; f < tris.size(); f += 3) {
-    const Corner a = corner(p, tris[f]), b = corner(p, tris[f + 1]), c = corner(p, tris[f + 2]);
-    const double least =
-        std::min({angle_at(a, b, c), angle_at(b, c, a), angle_at(c, a, b)}) * 180.0 / kPi;
-    if (least < degrees) ++below;
-  }
-  return tris.empty() ? 0.0 : double(below) / double(tris.size() / 3);
+  return tris.empty() ? 0.0 : double(faces_below(p, tris, degrees)) / double(tris.size() / 3);
 }
 
 // How far the faces cut into the box [0, 2] x [0, 1] x [0, 1] from its surface: the depth of

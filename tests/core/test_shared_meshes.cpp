@@ -86,27 +86,6 @@ void elephant_vertices_spike_cleared(void **) {
   expect_watertight(make_case("elephant.off vertices", m.xyz), 3);
 }
 
-// The smallest angle of each face, in degrees: how many faces fall below `degrees`.
-std::size_t faces_below(const Points &p, const std::vector<std::uint32_t> &tris, double degrees) {
-  auto at = [&](std::uint32_t c, std::uint32_t a, std::uint32_t b) {
-    double u[3], v[3];
-    for (int k = 0; k < 3; ++k) {
-      u[k] = p[3 * a + k] - p[3 * c + k];
-      v[k] = p[3 * b + k] - p[3 * c + k];
-    }
-    const double x = u[1] * v[2] - u[2] * v[1], y = u[2] * v[0] - u[0] * v[2],
-                 z = u[0] * v[1] - u[1] * v[0];
-    return std::atan2(std::sqrt(x * x + y * y + z * z), u[0] * v[0] + u[1] * v[1] + u[2] * v[2]) *
-           180.0 / 3.14159265358979323846;
-  };
-  std::size_t below = 0;
-  for (std::size_t f = 0; f + 2 < tris.size(); f += 3) {
-    const std::uint32_t a = tris[f], b = tris[f + 1], c = tris[f + 2];
-    if (std::min({at(a, b, c), at(b, c, a), at(c, a, b)}) < degrees) ++below;
-  }
-  return below;
-}
-
 // The vertices of two meshes whose faces are all well shaped (elephant: no angle under 30 degrees,
 // fandisk: none under 16). The loop module's fillings of the holes Algorithm 1 leaves among them
 // (and Algorithm 1 here and there) make some narrow faces, with an angle of 156-177 degrees, most

@@ -412,6 +412,29 @@ double median_nearest_distance(const Points &p) {
   return nearest[n / 2];
 }
 
+double angle_at(const Points &p, std::uint32_t c, std::uint32_t a, std::uint32_t b) {
+  double u[3], v[3];
+  for (int k = 0; k < 3; ++k) {
+    u[k] = p[3 * a + k] - p[3 * c + k];
+    v[k] = p[3 * b + k] - p[3 * c + k];
+  }
+  const double x = u[1] * v[2] - u[2] * v[1], y = u[2] * v[0] - u[0] * v[2],
+               z = u[0] * v[1] - u[1] * v[0];
+  return std::atan2(std::sqrt(x * x + y * y + z * z), u[0] * v[0] + u[1] * v[1] + u[2] * v[2]);
+}
+
+std::size_t faces_below(const Points &p, const std::vector<std::uint32_t> &triangles,
+                        double degrees) {
+  const double limit = degrees * 3.14159265358979323846 / 180.0;
+  std::size_t below = 0;
+  for (std::size_t f = 0; f + 2 < triangles.size(); f += 3) {
+    const std::uint32_t a = triangles[f], b = triangles[f + 1], c = triangles[f + 2];
+    if (std::min({angle_at(p, a, b, c), angle_at(p, b, c, a), angle_at(p, c, a, b)}) < limit)
+      ++below;
+  }
+  return below;
+}
+
 Points density_gradient(const Points &p, double ratio, std::uint64_t seed) {
   Rng rng(seed);
   double lo = p[0], hi = p[0];

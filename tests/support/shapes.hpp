@@ -75,6 +75,11 @@ void add_noise(Points &p, double fraction_of_diagonal, std::uint64_t seed);
 void add_noise_beyond(Points &p, double x, double sigma, std::uint64_t seed);
 // The median distance from a point to its nearest other point (exact; a duplicate counts as 0).
 double median_nearest_distance(const Points &p);
+// The angle (radians) at point c of triangle a b c, under which c sees the segment ab.
+double angle_at(const Points &p, std::uint32_t c, std::uint32_t a, std::uint32_t b);
+// How many of the triangles (3 point indices each) have an angle smaller than `degrees`.
+std::size_t faces_below(const Points &p, const std::vector<std::uint32_t> &triangles,
+                        double degrees);
 // Keeps each point with a chance that grows with the square of its x across the bounding box,
 // from 1 / ratio at the low end to 1 at the high end: a density `ratio` times higher on one side,
 // as a scanner leaves it on the near and far sides of an object.

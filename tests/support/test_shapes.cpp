@@ -166,6 +166,20 @@ void test_contour_stack(void **) {
   assert_true(t::contour_stack(v, tris, axis, 10, 4, 7) == s);  // deterministic
 }
 
+void test_triangle_angles(void **) {
+  // A right isosceles triangle (0, 1, 2) and a sliver (0, 1, 3) whose corner 3 sees 0-1 nearly
+  // flat: angles of 45 and 90 degrees, and one of about 0.6 degrees.
+  const t::Points p = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0.5, 0.005, 0};
+  const double degree = 3.14159265358979323846 / 180;
+  assert_true(std::fabs(t::angle_at(p, 0, 1, 2) - 90 * degree) < 1e-12);
+  assert_true(std::fabs(t::angle_at(p, 1, 0, 2) - 45 * degree) < 1e-12);
+  assert_true(t::angle_at(p, 3, 0, 1) > 178 * degree);
+  const std::vector<uint32_t> tris = {0, 1, 2, 0, 1, 3};
+  assert_int_equal(t::faces_below(p, tris, 10), 1);
+  assert_int_equal(t::faces_below(p, tris, 46), 2);
+  assert_int_equal(t::faces_below(p, tris, 0.5), 0);
+}
+
 }  // namespace
 
 int main(void) {
@@ -174,6 +188,7 @@ int main(void) {
       cmocka_unit_test(test_generators_deterministic), cmocka_unit_test(test_points_on_surfaces),
       cmocka_unit_test(test_grid_shapes),           cmocka_unit_test(test_blue_noise_spacing),
       cmocka_unit_test(test_noise_and_mesh_sampling), cmocka_unit_test(test_contour_stack),
+      cmocka_unit_test(test_triangle_angles),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
