@@ -20,6 +20,7 @@ EOF
 }
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+source "$root/bench/build_bench.sh"
 build=/tmp/build-bench
 work=/tmp/moa-demo-meshes
 out="$root/bench/results/demo_meshes.md"
@@ -55,17 +56,14 @@ mkdir -p "$work/meshes" "$work/results" "$work/logs"
 tar -xzf "$archive" -C "$work/meshes" --strip-components=2 --wildcards 'data/meshes/*.off'
 
 echo "== configure and build in $build"
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DMOA_BUILD_BENCH=ON \
-  -DMOA_BUILD_TESTS=OFF -DMOA_BUILD_CLI=ON -DMOA_BUILD_BINDINGS=OFF >"$work/logs/configure.log" 2>&1 ||
-  { cat "$work/logs/configure.log" >&2; exit 1; }
+configure_bench "$build" "$work/logs"
 targets=(moa_cli)
 cgal=0
 if grep -q $'^cgal_afront\t1\t' "$build/bench/peers.tsv"; then
   targets+=(cgal_afront)
   cgal=1
 fi
-cmake --build "$build" --target "${targets[@]}" -j "$jobs" >"$work/logs/build.log" 2>&1 ||
-  { tail -n 30 "$work/logs/build.log" >&2; exit 1; }
+build_bench "$build" "$work/logs" "$jobs" "${targets[@]}"
 moa="$build/src/cli/moa"
 
 # The vertex count is the first number after the OFF keyword (comments and blank lines aside).
@@ -81,14 +79,10 @@ for mesh in "$work"/meshes/*.off; do
 done
 echo "== ${#names[@]} meshes of 300-50,000 vertices (left out, as in the shared data: ${shared[*]:-none})"
 
-revision=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)
 # Changes count only where they can change the results: the library, the tool, the build and
 # this script (not the reports in bench/results, nor the documentation).
-if [[ $revision != unknown && -n $(git -C "$root" status --porcelain -- src include cmake \
-  CMakeLists.txt bench/CMakeLists.txt bench/cgal_afront.cpp bench/demo_meshes.sh \
-  bench/demo_meshes_report.py 2>/dev/null) ]]; then
-  revision="$revision with uncommitted changes"
-fi
+revision=$(code_revision src include cmake CMakeLists.txt bench/CMakeLists.txt \
+  bench/cgal_afront.cpp bench/build_bench.sh bench/demo_meshes.sh bench/demo_meshes_report.py)
 for name in "${names[@]}"; do
   mesh="$work/meshes/$name.off" res="$work/results/$name"
   "$moa" check "$mesh" --json >"$res.reference.json" 2>"$work/logs/$name.reference.log" || true

@@ -27,6 +27,7 @@ EOF
 }
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+source "$root/bench/build_bench.sh"
 build=/tmp/build-bench
 work=/tmp/moa-bench
 data="$root/../shared/data"
@@ -78,22 +79,16 @@ mkdir -p "$work/results" "$work/meshes" "$work/logs" "$work/normals"
 
 # The revision of the code that is built, read before the build: edits made while the run goes
 # on do not go into it.
-revision=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)
-if [[ $revision != unknown && -n $(git -C "$root" status --porcelain 2>/dev/null) ]]; then
-  revision="$revision with uncommitted changes"
-fi
+revision=$(code_revision)
 echo "== configure and build in $build"
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DMOA_BUILD_BENCH=ON \
-  -DMOA_BUILD_TESTS=OFF -DMOA_BUILD_CLI=ON -DMOA_BUILD_BINDINGS=OFF >"$work/logs/configure.log" 2>&1 ||
-  { cat "$work/logs/configure.log" >&2; exit 1; }
+configure_bench "$build" "$work/logs"
 grep 'bench:' "$work/logs/configure.log" || true
 cp "$build/bench/peers.tsv" "$work/peers.tsv"
 targets=(moa_bench moa_cli)  # the tool draws the pictures
 while IFS=$'\t' read -r peer built _; do
   [[ $peer != \#* && $built == 1 ]] && targets+=("$peer")
 done <"$work/peers.tsv"
-cmake --build "$build" --target "${targets[@]}" -j "$jobs" >"$work/logs/build.log" 2>&1 ||
-  { tail -n 30 "$work/logs/build.log" >&2; exit 1; }
+build_bench "$build" "$work/logs" "$jobs" "${targets[@]}"
 bench="$build/bench/moa_bench"
 
 # The methods to run: libmoa always, each peer when its runner was built (and asked for).
