@@ -73,10 +73,14 @@ bool on_a_line(double spacing, double across_gap);
 double median_spacing(const Neighborhood &nb);
 
 // The plane fitted at a point: the unit normal, unoriented, and whether the point lies on one
-// sheet of a thin wall whose far sheet, parallel to it, is in the point's list.
+// sheet of a thin wall whose far sheet, parallel to it, is in the point's list. Undirected when
+// the fit has no direction to speak of: in a cloud of a few dozen points, where the list
+// holds at least half of the cloud, reaches round the object and scatters about as far in
+// every direction (the normal is then whichever way rounding turns it).
 struct LocalPlane {
   Vec3 normal;
   bool in_thin_wall = false;
+  bool undirected = false;
 };
 
 // The least-squares plane through point i and its k neighbours. In a cloud of thin walls, where

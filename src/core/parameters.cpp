@@ -53,7 +53,9 @@ const ParamRow kRows[] = {
     {"max_normal_deviation",
      "degrees; largest angle between a triangle's normal and the local "
      "plane fitted at each of its vertices; at most 40 where every vertex lies "
-     "in a thin wall (the far sheet, parallel, in its neighbour list)",
+     "in a thin wall (the far sheet, parallel, in its neighbour list); not "
+     "measured at a vertex of a cloud of a few dozen points whose list holds "
+     "half of the cloud or more and scatters about evenly every way (no plane)",
      1, 90, false, &Params::max_normal_deviation},
     {"hole_size",
      "widest hole the loop module closes, in units of the local point spacing; a loop's "

@@ -166,6 +166,7 @@ bool TopologyJudge::normal_deviates(const Tri &t) const {
   double least_cos = 1;
   for (uint32_t v : t) {
     const LocalPlane &plane = plane_at(v);
+    if (plane.undirected) continue;  // no plane to deviate from
     const double cos_v = std::fabs(dot(n, plane.normal));
     if (cos_v < cos_normal_) return true;
     in_thin_wall = in_thin_wall && plane.in_thin_wall;
