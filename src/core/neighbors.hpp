@@ -72,6 +72,13 @@ bool on_a_line(double spacing, double across_gap);
 // theirs would raise it towards their own.
 double median_spacing(const Neighborhood &nb);
 
+// Whether the cloud is so small (a few dozen points at the default k) that every point's list
+// holds at least half of it: such a list reaches round the object, and what it measures is the
+// whole object's, not a neighbourhood's.
+inline bool lists_hold_half(const Neighborhood &nb, std::size_t points) {
+  return 2 * std::size_t(nb.k) + 1 >= points;
+}
+
 // The plane fitted at a point: the unit normal, unoriented, and whether the point lies on one
 // sheet of a thin wall whose far sheet, parallel to it, is in the point's list. Undirected when
 // the fit has no direction to speak of: in a cloud of a few dozen points, where the list
