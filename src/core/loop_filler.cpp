@@ -99,7 +99,7 @@ bool mark_tangled_regions(const GrowthState &g, std::vector<uint8_t> &tangled) {
 // patches where most vertices are pinched. Not in a cloud of a few dozen points, whose first
 // faces, grown from lists that reach round the object, meet in several fans at most vertices:
 // 20 random points on a sphere were all marked, no hole of theirs was filled, and the widening
-// left 1 triangle.
+// and the dropping of stray pieces left 1 triangle.
 void mark_tangles(GrowthState &g) {
   const uint32_t n = uint32_t(g.points.size());
   g.tangled.clear();

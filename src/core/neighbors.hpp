@@ -2,6 +2,7 @@
 // local point spacing and, on demand, the local reference plane (PCA normal).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -83,7 +84,7 @@ inline bool lists_hold_half(const Neighborhood &nb, std::size_t points) {
 // sheet of a thin wall whose far sheet, parallel to it, is in the point's list. Undirected when
 // the fit has no direction to speak of: in a cloud of a few dozen points, where the list
 // holds at least half of the cloud, reaches round the object and scatters about as far in
-// every direction (the normal is then whichever way rounding turns it).
+// every direction (its normal then says nothing of the surface at the point).
 struct LocalPlane {
   Vec3 normal;
   bool in_thin_wall = false;
