@@ -84,7 +84,8 @@ struct GrowthState {
 // Hands the heap's free memory back to the system (reconstruct.cpp).
 void return_free_memory();
 
-// Algorithm 1 (paper §3.5.1). `tick(fraction)` reports progress and may throw Cancelled.
+// Algorithm 1 (paper §3.5.1). `tick(fraction)` reports progress and may throw Cancelled. When it
+// makes no triangle at all, it runs again with the normal test left out for the rest of the run.
 void build_mesh(GrowthState &g, const std::function<void(double)> &tick);
 
 // Finds pieces of the mesh that a join turned inside out (their seam with the rest can never

@@ -52,6 +52,8 @@ class TopologyJudge {
                 bool layers_allowed = false, bool flat_corners = false);
   // Records a verdict in the run statistics.
   static void count(Verdict v, moa_stats &stats);
+  // Leaves the normal test out of every later judgment (build_mesh, when it refused all).
+  void drop_normal_test() { cos_normal_ = cos_thin_wall_normal_ = 0; }
   // How far (work units) around t's bounding box judge() looks at faces: the crossing test's
   // neighbourhood, which the layer test searches too.
   double reach(const Tri &t) const;
