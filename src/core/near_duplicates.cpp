@@ -88,10 +88,13 @@ std::vector<uint32_t> near_duplicates(const PointSet &points, const Neighborhood
   // A region given twice: most of a point's neighbours are in tight clusters too. Where the
   // clusters lie along lines, chance makes that common, unless the whole cloud has copies; with
   // fewer than kRegionNeighbors in the lists (a parameter), the region is too small to judge.
+  // Nor is there a region in a cloud of a few dozen points: the lists hold half of it, and a
+  // box's 8 corners, 1 x 4 x 4, are "tight clusters" across its thin side (4 points were left).
   const bool clustered_cloud = double(counts.clustered) >= kClusteredShare * double(n);
   const bool judge_regions =
-      clustered_cloud || (double(counts.across) >= kMinAcrossShare * double(counts.clustered) &&
-                          nb.k >= kRegionNeighbors);
+      !lists_hold_half(nb, n) &&
+      (clustered_cloud || (double(counts.across) >= kMinAcrossShare * double(counts.clustered) &&
+                           nb.k >= kRegionNeighbors));
   const double region_share = clustered_cloud ? kRegionShareInClusteredCloud : kRegionShare;
   const unsigned region = std::min(kRegionNeighbors, nb.k);
   auto in_jittered_region = [&](uint32_t i) {

@@ -418,13 +418,22 @@ static Points dodecahedron_corners() {
 // edges sharper than the fill passes reach (square pyramid 63 degrees, triangular prism 60,
 // box 90): a face stayed open on the box, the pyramid and the prism. The dodecahedron's 20
 // corners gave 1 triangle while lists holding the whole cloud served as neighbourhoods, for the
-// normal test and the loop module's tangles (neighbors.hpp, lists_hold_half).
+// normal test and the loop module's tangles (neighbors.hpp, lists_hold_half). The corners of
+// a flat box (1 x 4 x 4) or a slab (1 x 1 x 0.3) gave one square of 4 points: the corners
+// across the thin side passed for copies of one another (near_duplicates.cpp).
+static Points box_corners(double dx, double dy, double dz) {
+  Points p;
+  for (int i = 0; i < 8; ++i) p.insert(p.end(), {dx * (i & 1), dy * (i >> 1 & 1), dz * (i >> 2)});
+  return p;
+}
 static void test_polyhedron_corners_closed_genus0(void **) {
-  Points box, pyramid = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5, 0.5, 1}, prism;
-  for (int i = 0; i < 8; ++i) box.insert(box.end(), {double(i & 1), 2.0 * (i >> 1 & 1), 3.0 * (i >> 2)});
+  const Points box = box_corners(1, 2, 3);
+  Points pyramid = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5, 0.5, 1}, prism;
   for (double z : {0.0, 2.0}) prism.insert(prism.end(), {0, 0, z, 1, 0, z, 0.5, 0.8, z});
   const std::vector<std::pair<const char *, Points>> shapes = {
       {"box corners", box},
+      {"flat box corners", box_corners(1, 4, 4)},
+      {"slab corners", box_corners(1, 1, 0.3)},
       {"square pyramid corners", pyramid},
       {"triangular prism corners", prism},
       {"regular tetrahedron corners", {1, 1, 1, 1, -1, -1, -1, 1, -1, -1, -1, 1}},
