@@ -27,7 +27,42 @@ constexpr std::size_t kMaxWidenings = 256;
 constexpr std::size_t kSpikeTries = 2;
 constexpr std::size_t kMaxSpikeFaces = 6;
 
+// patch_last_holes: the patch may lie close over faces of the hole's own piece (no
+// second-layer test) only when the piece holds at least this many times the square of the
+// loop's length in faces. A round hole of L edges spans about L^2 / 6 faces' worth of area, so
+// the hole is then a small part of a larger surface. On a piece hardly larger than its hole
+// (an open patch of a few dozen points whose whole border counts as a hole) the patch would lie
+// over the piece itself, a pillow of two layers.
+constexpr double kLayerFreePieceFaces = 1.0;
+
 }  // namespace
+
+// After every other step of the loop module, holes still open are patched once more as they
+// are, the patch allowed edge folds down to a few degrees (TopologyJudge::allow_sharp_folds)
+// and, in a piece much larger than the hole, to lie close over other faces. Such a hole sits
+// in a crumpled spot (noise, a misregistered overlap, a gap narrower than the spacing) where
+// every patch met a fold sharper than edge_fold_angle or a neighbouring layer: a ridge that
+// sharp is a lesser fault than the hole. Returns the holes closed.
+std::size_t LoopFiller::patch_last_holes() {
+  collect_hole_edges();
+  loops_ = trace_loops();
+  classify_and_pool();
+  std::unordered_map<uint32_t, std::size_t> piece_faces;
+  std::size_t closed = 0;
+  for (const Loop &loop : loops_) {
+    const std::size_t n = loop.vertices.size();
+    if (!loop.fillable || loop.tangled || n > kMaxPatchedLoop) continue;
+    g_.poll();
+    if (!still_open(loop.vertices)) continue;
+    if (piece_faces.empty()) piece_faces = faces_per_component();
+    const bool layers_allowed =
+        double(piece_faces[loop.piece]) >= kLayerFreePieceFaces * double(n) * double(n);
+    g_.judge.allow_sharp_folds(true);
+    closed += patch_pieces(loop.vertices, layers_allowed);
+    g_.judge.allow_sharp_folds(false);
+  }
+  return closed;
+}
 
 // The last resort: each hole still open is patched at once with the triangulation of its
 // loop that bends the surface least (hole_patch.hpp), if every triangle of it passes the

@@ -111,9 +111,10 @@ class LoopFiller {
   // The boundary loops of the mesh as it is (loop_tracing.cpp).
   std::size_t count_loops();
   // Repairs after the rounds (hole_repair.cpp): the faces along holes that stayed open go;
-  // the last holes are patched whole.
+  // the last holes are patched whole; at the very end, once more with sharper folds allowed.
   std::size_t widen_open_holes();
   std::size_t patch_open_holes();
+  std::size_t patch_last_holes();
   // Pieces (loop_pieces.cpp): strips between two pieces closed; stray pieces removed.
   std::size_t zip_parallel_loops();
   std::size_t drop_stray_pieces(bool layers = true);

@@ -39,7 +39,8 @@ const ParamRow kRows[] = {
      &Params::flatness_c},
     {"edge_fold_angle",
      "degrees; two triangles sharing an edge must open at least this angle "
-     "alpha (180 = flat), smaller is a fold",
+     "alpha (180 = flat), smaller is a fold; the loop module's last patch of a "
+     "hole still open at the end may open down to 5",
      0, 179, false, &Params::edge_fold_angle},
     {"vertex_fold_angle",
      "degrees; two triangles sharing only a vertex whose centre directions "

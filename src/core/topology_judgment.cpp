@@ -22,6 +22,10 @@ const double kMaxCornerCosRelaxed = std::cos(degrees_to_radians(179.0));
 // joined along some edges and not along others.
 constexpr double kMinMergeBendCos = -1e-9;
 
+// The sharpest edge fold the loop module's last patches may make (allow_sharp_folds): a ridge
+// this sharp beats a hole left open, while a face folded flat onto its neighbour does not.
+constexpr double kSharpFoldDegrees = 5.0;
+
 // A triangle whose normal is more than about 100 degrees from the mean normal of a fan it
 // joins faces backwards.
 constexpr double kBackwardsCosine = -0.17;
@@ -127,7 +131,9 @@ TopologyJudge::TopologyJudge(const PointSet &points, const Neighborhood &nb, con
       cos_vertex_open_(std::cos(degrees_to_radians(params.vertex_open_angle))),
       cos_normal_(std::cos(degrees_to_radians(params.max_normal_deviation))),
       cos_thin_wall_normal_(std::cos(degrees_to_radians(
-          std::min(params.max_normal_deviation, kThinWallNormalDeviation)))) {
+          std::min(params.max_normal_deviation, kThinWallNormalDeviation)))),
+      // Never stricter than the parameter: with edge_fold_angle under 5 degrees, that is kept.
+      cos_sharp_fold_(std::max(cos_edge_fold_, std::cos(degrees_to_radians(kSharpFoldDegrees)))) {
   std::size_t slots = 1;  // a power of two, up to 2^16 (2.5 MB)
   while (slots < points.size() && slots < kPlaneCacheSlots) slots *= 2;
   planes_.resize(slots);
@@ -185,7 +191,7 @@ TopologyJudge::EdgeFaces TopologyJudge::faces_on_edges(const Tri &t) const {
   return edges;
 }
 
-bool TopologyJudge::edge_folds(const Tri &t, const EdgeFaces &edges) const {
+bool TopologyJudge::edge_folds(const Tri &t, const EdgeFaces &edges, double cos_fold) const {
   // Fig. 8 (2): alpha is the angle between AB x BC and AB x BD; near 0 the two triangles lie
   // on the same side of AB, folded onto each other.
   for (int i = 0; i < 3; ++i) {
@@ -196,7 +202,7 @@ bool TopologyJudge::edge_folds(const Tri &t, const EdgeFaces &edges) const {
       const Vec3 &C = points_.work[t[(i + 2) % 3]], &D = points_.work[id];
       Vec3 ab = B - A;
       Vec3 u = normalized(cross(ab, C - B)), w = normalized(cross(ab, D - B));
-      if (dot(u, w) > cos_edge_fold_) return true;
+      if (dot(u, w) > cos_fold) return true;
     }
   }
   return false;
@@ -393,7 +399,9 @@ Verdict TopologyJudge::judge(const Tri &t, const uint32_t *sphere, std::size_t c
   }
   if (!relaxed && normal_deviates(t)) return Verdict::Flatness;
   const EdgeFaces edges = faces_on_edges(t);
-  if (edge_folds(t, edges) || merges_across_a_bend(t, edges)) return Verdict::EdgeFold;
+  if (edge_folds(t, edges, sharp_folds_ ? cos_sharp_fold_ : cos_edge_fold_) ||
+      merges_across_a_bend(t, edges))
+    return Verdict::EdgeFold;
   Frame frame = frame_of(t, edges);
   if (!relaxed && (vertex_folds(t) || faces_backwards(t, frame))) return Verdict::VertexFold;
   if (!relaxed && count > 0 && flatness_fails(t, sphere, count)) return Verdict::Flatness;

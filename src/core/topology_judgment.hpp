@@ -54,6 +54,9 @@ class TopologyJudge {
   static void count(Verdict v, moa_stats &stats);
   // Leaves the normal test out of every later judgment (build_mesh, when it refused all).
   void drop_normal_test() { cos_normal_ = cos_thin_wall_normal_ = 0; }
+  // While on, an edge fold passes down to kSharpFoldDegrees (topology_judgment.cpp) rather than
+  // edge_fold_angle: for the loop module's last patches (LoopFiller::patch_last_holes).
+  void allow_sharp_folds(bool on) { sharp_folds_ = on; }
   // How far (work units) around t's bounding box judge() looks at faces: the crossing test's
   // neighbourhood, which the layer test searches too.
   double reach(const Tri &t) const;
@@ -68,7 +71,7 @@ class TopologyJudge {
     uint32_t face[3];
   };
   EdgeFaces faces_on_edges(const Tri &t) const;
-  bool edge_folds(const Tri &t, const EdgeFaces &edges) const;
+  bool edge_folds(const Tri &t, const EdgeFaces &edges, double cos_fold) const;
   bool merges_across_a_bend(const Tri &t, const EdgeFaces &edges);
   bool vertex_folds(const Tri &t) const;
   // The components t will be joined to through its edges, and whether each one's orientation
@@ -94,6 +97,8 @@ class TopologyJudge {
   CrossingIndex &crossings_;
   double flatness_a_, flatness_c_;
   double cos_edge_fold_, cos_vertex_fold_, cos_vertex_open_, cos_normal_, cos_thin_wall_normal_;
+  double cos_sharp_fold_;  // the fold limit allow_sharp_folds sets
+  bool sharp_folds_ = false;
   mutable std::vector<uint32_t> near_;
   // Local planes of recently judged corners, direct-mapped by point index: the growth
   // front stays within a few Morton blocks, so nearly every corner is found here.

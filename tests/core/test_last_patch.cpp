@@ -1,0 +1,193 @@
+// The loop module's last patch (LoopFiller::patch_last_holes, src/core/hole_repair.cpp) on a
+// blade meshed by hand: a triangular prism whose cross-section has a sharp corner, the blade's
+// edge. One face along that edge is taken out, leaving a hole of three edges whose only patch
+// opens against the face across the edge at the blade's own angle. Sharper than
+// edge_fold_angle (30 degrees), the patch is refused by the judgment of the earlier steps; the
+// last patch takes it down to 5 degrees, and no sharper. (On this clean blade the earlier
+// steps would close the hole another way, widening it and patching a tent inside the blade; in
+// crumpled spots of real clouds they find none.)
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "core/growth_state.hpp"
+#include "core/kd_tree.hpp"
+#include "core/loop_filler.hpp"
+#include "core/neighbors.hpp"
+#include "core/point_set.hpp"
+
+// cmocka last: its macros clash with names in the standard headers.
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+extern "C" {  // this cmocka's header has no C++ guard of its own
+#include <cmocka.h>
+}
+
+namespace {
+
+using moa::Tri;
+
+// The prism: cross-section A (the edge, at the origin), B = (1, 0, h), C = (1, 0, -h) in the
+// xz-plane, h = tan(angle / 2), swept along y from 0 to 1. Each long side is a grid of n x n
+// squares, the back (x = 1) one of 2 x n, the two ends a strip of triangles. Every vertex is
+// computed once, so faces sharing it share its index.
+struct Blade {
+  static constexpr int n = 10;
+  std::vector<double> xyz;
+  std::vector<Tri> faces;  // caller's indices, facing outward
+  Tri removed{};           // the face taken out: on the top side, along the edge
+
+  explicit Blade(double angle_degrees) {
+    const double h = std::tan(angle_degrees * M_PI / 360.0);
+    auto add = [&](double x, double y, double z) {
+      xyz.insert(xyz.end(), {x, y, z});
+      return uint32_t(xyz.size() / 3 - 1);
+    };
+    // edge[j]; top[i][j] and bottom[i][j] for i = 1..n (i = 0 is the edge); back[j] at z = 0.
+    std::vector<uint32_t> edge(n + 1), back(n + 1);
+    std::vector<std::vector<uint32_t>> top(n + 1, std::vector<uint32_t>(n + 1)), bottom = top;
+    for (int j = 0; j <= n; ++j) {
+      const double y = double(j) / n;
+      edge[j] = top[0][j] = bottom[0][j] = add(0, y, 0);
+      for (int i = 1; i <= n; ++i) {
+        const double x = double(i) / n;
+        top[i][j] = add(x, y, h * x);
+        bottom[i][j] = add(x, y, -h * x);
+      }
+      back[j] = add(1, y, 0);
+    }
+    auto quad = [&](uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
+      face(a, b, c);
+      face(a, c, d);
+    };
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) {
+        quad(top[i][j], top[i + 1][j], top[i + 1][j + 1], top[i][j + 1]);
+        quad(bottom[i][j], bottom[i + 1][j], bottom[i + 1][j + 1], bottom[i][j + 1]);
+      }
+    for (int j = 0; j < n; ++j) {
+      quad(top[n][j], back[j], back[j + 1], top[n][j + 1]);
+      quad(back[j], bottom[n][j], bottom[n][j + 1], back[j + 1]);
+    }
+    for (int j : {0, n}) {
+      face(edge[j], top[1][j], bottom[1][j]);
+      for (int i = 1; i + 1 < n; ++i) quad(top[i][j], top[i + 1][j], bottom[i + 1][j], bottom[i][j]);
+      face(top[n - 1][j], top[n][j], back[j]);
+      face(top[n - 1][j], back[j], bottom[n - 1][j]);
+      face(bottom[n - 1][j], back[j], bottom[n][j]);
+    }
+    // The top side's face on the edge between edge[4] and edge[5].
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      int on_edge = 0;
+      for (uint32_t v : faces[f]) on_edge += v == edge[4] || v == edge[5];
+      bool on_top = false;
+      for (uint32_t v : faces[f]) on_top |= xyz[3 * v + 2] > 0;
+      if (on_edge == 2 && on_top) {
+        removed = faces[f];
+        faces.erase(faces.begin() + std::ptrdiff_t(f));
+        break;
+      }
+    }
+  }
+
+  // Adds triangle a b c facing away from the prism's centroid (2/3, 1/2, 0): it is convex.
+  void face(uint32_t a, uint32_t b, uint32_t c) {
+    const double *p = &xyz[3 * a], *q = &xyz[3 * b], *r = &xyz[3 * c];
+    const double u[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]};
+    const double w[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
+    const double nrm[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
+                           u[0] * w[1] - u[1] * w[0]};
+    const double out[3] = {p[0] - 2.0 / 3.0, p[1] - 0.5, p[2]};
+    if (nrm[0] * out[0] + nrm[1] * out[1] + nrm[2] * out[2] >= 0)
+      faces.push_back({a, b, c});
+    else
+      faces.push_back({a, c, b});
+  }
+};
+
+struct Outcome {
+  bool refused_earlier = false;
+  std::size_t closed_by_last_patch = 0;
+  std::size_t open_edges = 0, over_full_edges = 0;
+};
+
+std::size_t open_edges(const moa::MeshState &mesh, std::size_t *over_full = nullptr) {
+  std::map<std::pair<uint32_t, uint32_t>, int> edges;
+  for (uint32_t f = 0; f < mesh.face_count(); ++f) {
+    if (!mesh.alive(f)) continue;
+    const Tri &t = mesh.stored(f);
+    for (int i = 0; i < 3; ++i) {
+      const uint32_t a = t[i], b = t[(i + 1) % 3];
+      ++edges[{std::min(a, b), std::max(a, b)}];
+    }
+  }
+  std::size_t open = 0;
+  for (const auto &[edge, count] : edges) {
+    open += count == 1;
+    if (over_full) *over_full += count > 2;
+  }
+  return open;
+}
+
+// Builds the blade's mesh with its hole, as the loop module would meet it; tries the patch with
+// the judgment of the earlier steps, then runs the last patch.
+Outcome patch_blade(Blade blade) {
+  const std::size_t n = blade.xyz.size() / 3;
+  moa::PointSet points = moa::prepare_points(blade.xyz.data(), n);
+  assert_int_equal(points.size(), n);
+  std::vector<uint32_t> internal(n);
+  for (uint32_t k = 0; k < n; ++k) internal[points.original[k]] = k;
+  const moa::InternalOrder order(points, blade.xyz.data());
+  const moa::KdIndex index(points.work);
+  const moa::Neighborhood nb = moa::compute_neighbors(index, 20, [](double) {});
+  const moa::Params params;
+  moa_stats stats{};
+  moa::GrowthState g(points, nb, params, moa::median_spacing(nb), stats);
+  for (const Tri &f : blade.faces) {
+    const Tri t{internal[f[0]], internal[f[1]], internal[f[2]]};
+    assert_true(g.mesh.check(t) == moa::TopologyVerdict::Ok);
+    g.add_face(t);
+  }
+  assert_int_equal(open_edges(g.mesh), 3);
+
+  Outcome out;
+  // The face taken out, put back as a patch by the relaxed judgment of the earlier steps.
+  const Tri patch{internal[blade.removed[0]], internal[blade.removed[1]],
+                  internal[blade.removed[2]]};
+  out.refused_earlier = !g.add_all_or_none({patch}, true);
+  out.closed_by_last_patch = moa::LoopFiller(g).patch_last_holes();
+  out.open_edges = open_edges(g.mesh, &out.over_full_edges);
+  return out;
+}
+
+// A 12-degree blade: the patch opens 12 degrees against the bottom face across the edge.
+void blade_hole_closed_by_last_patch(void **) {
+  const Outcome o = patch_blade(Blade(12.0));
+  assert_true(o.refused_earlier);
+  assert_int_equal(o.closed_by_last_patch, 1);
+  assert_int_equal(o.open_edges, 0);
+  assert_int_equal(o.over_full_edges, 0);
+}
+
+// A 3-degree blade: sharper than the last patch may fold, the hole stays.
+void blade_sharper_than_5_degrees_kept_open(void **) {
+  const Outcome o = patch_blade(Blade(3.0));
+  assert_true(o.refused_earlier);
+  assert_int_equal(o.closed_by_last_patch, 0);
+  assert_int_equal(o.open_edges, 3);
+  assert_int_equal(o.over_full_edges, 0);
+}
+
+}  // namespace
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(blade_hole_closed_by_last_patch),
+      cmocka_unit_test(blade_sharper_than_5_degrees_kept_open),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
