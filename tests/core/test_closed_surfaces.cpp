@@ -427,11 +427,10 @@ static Points box_corners(double dx, double dy, double dz) {
   return p;
 }
 static void test_polyhedron_corners_closed_genus0(void **) {
-  const Points box = box_corners(1, 2, 3);
   Points pyramid = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5, 0.5, 1}, prism;
   for (double z : {0.0, 2.0}) prism.insert(prism.end(), {0, 0, z, 1, 0, z, 0.5, 0.8, z});
   const std::vector<std::pair<const char *, Points>> shapes = {
-      {"box corners", box},
+      {"box corners", box_corners(1, 2, 3)},
       {"flat box corners", box_corners(1, 4, 4)},
       {"slab corners", box_corners(1, 1, 0.3)},
       {"square pyramid corners", pyramid},
