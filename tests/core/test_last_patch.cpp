@@ -12,11 +12,8 @@
 #include <utility>
 #include <vector>
 
-#include "core/growth_state.hpp"
-#include "core/kd_tree.hpp"
 #include "core/loop_filler.hpp"
-#include "core/neighbors.hpp"
-#include "core/point_set.hpp"
+#include "hand_mesh.hpp"
 
 // cmocka last: its macros clash with names in the standard headers.
 #include <setjmp.h>
@@ -135,30 +132,15 @@ std::size_t open_edges(const moa::MeshState &mesh, std::size_t *over_full = null
 
 // Builds the blade's mesh with its hole, as the loop module would meet it; tries the patch with
 // the judgment of the earlier steps, then runs the last patch.
-Outcome patch_blade(Blade blade) {
-  const std::size_t n = blade.xyz.size() / 3;
-  moa::PointSet points = moa::prepare_points(blade.xyz.data(), n);
-  assert_int_equal(points.size(), n);
-  std::vector<uint32_t> internal(n);
-  for (uint32_t k = 0; k < n; ++k) internal[points.original[k]] = k;
-  const moa::InternalOrder order(points, blade.xyz.data());
-  const moa::KdIndex index(points.work);
-  const moa::Neighborhood nb = moa::compute_neighbors(index, 20, [](double) {});
-  const moa::Params params;
-  moa_stats stats{};
-  moa::GrowthState g(points, nb, params, moa::median_spacing(nb), stats);
-  for (const Tri &f : blade.faces) {
-    const Tri t{internal[f[0]], internal[f[1]], internal[f[2]]};
-    assert_true(g.mesh.check(t) == moa::TopologyVerdict::Ok);
-    g.add_face(t);
-  }
+Outcome patch_blade(const Blade &blade) {
+  moa::test::HandMesh mesh(blade.xyz, blade.faces);
+  assert_true(mesh.loaded());
+  moa::GrowthState &g = mesh.g;
   assert_int_equal(open_edges(g.mesh), 3);
 
   Outcome out;
   // The face taken out, put back as a patch by the relaxed judgment of the earlier steps.
-  const Tri patch{internal[blade.removed[0]], internal[blade.removed[1]],
-                  internal[blade.removed[2]]};
-  out.refused_earlier = !g.add_all_or_none({patch}, true);
+  out.refused_earlier = !g.add_all_or_none({mesh.internal(blade.removed)}, true);
   out.closed_by_last_patch = moa::LoopFiller(g).patch_last_holes();
   out.open_edges = open_edges(g.mesh, &out.over_full_edges);
   return out;

@@ -11,9 +11,7 @@
 #include <vector>
 
 #include "core/growth_state.hpp"
-#include "core/kd_tree.hpp"
-#include "core/neighbors.hpp"
-#include "core/point_set.hpp"
+#include "hand_mesh.hpp"
 
 // cmocka last: its macros clash with names in the standard headers.
 #include <setjmp.h>
@@ -59,23 +57,10 @@ struct Outcome {
 };
 
 // Builds the torus's mesh as the loop module would have left it and runs the tunnel cut.
-Outcome cut_tunnels(Torus torus) {
-  const std::size_t n = torus.xyz.size() / 3;
-  moa::PointSet points = moa::prepare_points(torus.xyz.data(), n);
-  assert_int_equal(points.size(), n);
-  std::vector<uint32_t> internal(n);
-  for (uint32_t k = 0; k < n; ++k) internal[points.original[k]] = k;
-  const moa::InternalOrder order(points, torus.xyz.data());
-  const moa::KdIndex index(points.work);
-  const moa::Neighborhood nb = moa::compute_neighbors(index, 20, [](double) {});
-  const moa::Params params;
-  moa_stats stats{};
-  moa::GrowthState g(points, nb, params, moa::median_spacing(nb), stats);
-  for (const Tri &f : torus.faces) {
-    const Tri t{internal[f[0]], internal[f[1]], internal[f[2]]};
-    assert_true(g.mesh.check(t) == moa::TopologyVerdict::Ok);
-    g.add_face(t);
-  }
+Outcome cut_tunnels(const Torus &torus) {
+  moa::test::HandMesh mesh(torus.xyz, torus.faces);
+  assert_true(mesh.loaded());
+  moa::GrowthState &g = mesh.g;
 
   Outcome out;
   out.cut = moa::cut_narrow_tunnels(g, 0);

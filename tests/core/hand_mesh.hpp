@@ -1,0 +1,63 @@
+// A mesh built by hand, loaded into the growth state the loop module works on, as if Algorithm 1
+// had made it: for tests of single steps of the loop module on a known mesh.
+#pragma once
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "core/growth_state.hpp"
+#include "core/kd_tree.hpp"
+#include "core/neighbors.hpp"
+#include "core/point_set.hpp"
+
+namespace moa::test {
+
+// Everything the growth state refers to, in the order it is made; `faces` index `xyz` (the
+// caller's order) and must each pass the mesh's topology check as they are added.
+class HandMesh {
+ public:
+  HandMesh(std::vector<double> xyz, const std::vector<Tri> &faces)
+      : xyz_(std::move(xyz)),
+        points_(prepare_points(xyz_.data(), xyz_.size() / 3)),
+        internal_(internal_indices(points_, xyz_.size() / 3)),
+        order_(points_, xyz_.data()),
+        index_(points_.work),
+        nb_(compute_neighbors(index_, 20, [](double) {})),
+        g(points_, nb_, params_, median_spacing(nb_), stats_) {
+    for (const Tri &f : faces) {
+      const Tri t = internal(f);
+      ok_ &= g.mesh.check(t) == TopologyVerdict::Ok;
+      g.add_face(t);
+    }
+  }
+  HandMesh(const HandMesh &) = delete;
+  HandMesh &operator=(const HandMesh &) = delete;
+
+  // Whether every point is a point of its own (no duplicates) and every face passed the check.
+  bool loaded() const { return ok_ && points_.size() == xyz_.size() / 3; }
+  // A face given in the caller's indices, in the growth state's.
+  Tri internal(const Tri &f) const { return {internal_[f[0]], internal_[f[1]], internal_[f[2]]}; }
+
+ private:
+  static std::vector<uint32_t> internal_indices(const PointSet &points, std::size_t count) {
+    std::vector<uint32_t> internal(count, kNone);
+    for (uint32_t k = 0; k < points.size(); ++k) internal[points.original[k]] = k;
+    return internal;
+  }
+
+  std::vector<double> xyz_;
+  PointSet points_;
+  std::vector<uint32_t> internal_;
+  InternalOrder order_;
+  KdIndex index_;
+  Neighborhood nb_;
+  Params params_;
+  moa_stats stats_{};
+  bool ok_ = true;
+
+ public:
+  GrowthState g;
+};
+
+}  // namespace moa::test
