@@ -37,6 +37,18 @@ constexpr double kLayerFreePieceFaces = 1.0;
 
 }  // namespace
 
+// The loops of the mesh as it is that are holes (tangles' loops never are) short enough to be
+// patched whole; pointers into loops_, which the patching leaves as it is.
+std::vector<const Loop *> LoopFiller::trace_patchable_holes() {
+  collect_hole_edges();
+  loops_ = trace_loops();
+  classify_and_pool();
+  std::vector<const Loop *> holes;
+  for (const Loop &loop : loops_)
+    if (loop.fillable && loop.vertices.size() <= kMaxPatchedLoop) holes.push_back(&loop);
+  return holes;
+}
+
 // After every other step of the loop module, holes still open are patched once more as they
 // are, the patch allowed edge folds down to a few degrees (TopologyJudge::allow_sharp_folds)
 // and, in a piece much larger than the hole, to lie close over other faces. Such a hole sits
@@ -44,21 +56,16 @@ constexpr double kLayerFreePieceFaces = 1.0;
 // every patch met a fold sharper than edge_fold_angle or a neighbouring layer: a ridge that
 // sharp is a lesser fault than the hole. Returns the holes closed.
 std::size_t LoopFiller::patch_last_holes() {
-  collect_hole_edges();
-  loops_ = trace_loops();
-  classify_and_pool();
   std::unordered_map<uint32_t, std::size_t> piece_faces;
   std::size_t closed = 0;
-  for (const Loop &loop : loops_) {
-    const std::size_t n = loop.vertices.size();
-    if (!loop.fillable || loop.tangled || n > kMaxPatchedLoop) continue;
+  for (const Loop *hole : trace_patchable_holes()) {
     g_.poll();
-    if (!still_open(loop.vertices)) continue;
+    if (!still_open(hole->vertices)) continue;
     if (piece_faces.empty()) piece_faces = faces_per_component();
-    const bool layers_allowed =
-        double(piece_faces[loop.piece]) >= kLayerFreePieceFaces * double(n) * double(n);
+    const double n = double(hole->vertices.size());
+    const bool layers_allowed = double(piece_faces[hole->piece]) >= kLayerFreePieceFaces * n * n;
     g_.judge.allow_sharp_folds(true);
-    closed += patch_pieces(loop.vertices, layers_allowed);
+    closed += patch_pieces(hole->vertices, layers_allowed);
     g_.judge.allow_sharp_folds(false);
   }
   return closed;
@@ -71,14 +78,9 @@ std::size_t LoopFiller::patch_last_holes() {
 // without the second-layer test; then after clearing a spike, and after clearing the whole
 // stars of the hole's vertices. Returns the holes closed.
 std::size_t LoopFiller::patch_open_holes() {
-  collect_hole_edges();
-  loops_ = trace_loops();
-  classify_and_pool();
-  std::vector<std::vector<uint32_t>> holes;
-  for (const Loop &loop : loops_)
-    if (loop.fillable && loop.vertices.size() <= kMaxPatchedLoop) holes.push_back(loop.vertices);
   std::size_t closed = 0, widenings = 0;
-  for (const std::vector<uint32_t> &hole : holes) {
+  for (const Loop *loop : trace_patchable_holes()) {
+    const std::vector<uint32_t> &hole = loop->vertices;
     g_.poll();
     if (!still_open(hole)) continue;  // widening a neighbouring hole changed it
     // At a sharp corner the faces across the crease can lie over a patch in projection

@@ -148,6 +148,7 @@ class LoopFiller {
   std::size_t remove_open_groups(uint32_t first);
 
   // hole_repair.cpp
+  std::vector<const Loop *> trace_patchable_holes();
   // How a hole is widened: the faces on its edges, those a vertex needs to stay in the mesh
   // excepted or not; or every face at its vertices.
   enum class Widening { KeepingVertices, Rims, Stars };
