@@ -1,8 +1,12 @@
 // A mesh built by hand, loaded into the growth state the loop module works on, as if Algorithm 1
-// had made it: for tests of single steps of the loop module on a known mesh.
+// had made it: for tests of single steps of the loop module on a known mesh; and the counts
+// those tests check the result by.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
+#include <map>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -59,5 +63,36 @@ class HandMesh {
  public:
   GrowthState g;
 };
+
+// The live faces of a mesh counted by their edges and vertices.
+struct MeshCounts {
+  std::size_t faces = 0, edges = 0, vertices_used = 0;
+  std::size_t open_edges = 0;       // edges of one face
+  std::size_t over_full_edges = 0;  // edges of three faces or more
+  long euler_characteristic() const { return long(vertices_used) - long(edges) + long(faces); }
+};
+
+inline MeshCounts count_mesh(const MeshState &mesh) {
+  std::map<std::pair<uint32_t, uint32_t>, int> edges;
+  std::set<uint32_t> used;
+  MeshCounts c;
+  for (uint32_t f = 0; f < mesh.face_count(); ++f) {
+    if (!mesh.alive(f)) continue;
+    ++c.faces;
+    const Tri &t = mesh.stored(f);
+    for (int i = 0; i < 3; ++i) {
+      const uint32_t a = t[i], b = t[(i + 1) % 3];
+      ++edges[{std::min(a, b), std::max(a, b)}];
+      used.insert(a);
+    }
+  }
+  for (const auto &[edge, count] : edges) {
+    c.open_edges += count == 1;
+    c.over_full_edges += count > 2;
+  }
+  c.edges = edges.size();
+  c.vertices_used = used.size();
+  return c;
+}
 
 }  // namespace moa::test

@@ -392,14 +392,16 @@ static void test_cone_take_in_closed_genus0(void **) {
 static void test_tetrahedron_take_in_closed_genus0(void **) {
   MOA_EXPECT(closed_failure(tetrahedron_take_in_case(), 0));
 }
-// The 12 corners of a regular icosahedron: cyclic permutations of (0, +-1, +-phi).
-static Points icosahedron_corners() {
-  const double phi = (1 + std::sqrt(5.0)) / 2;
+// The 12 points (0, +-a, +-b) and their cyclic permutations.
+static Points cyclic_corners(double a, double b) {
   Points p;
-  for (double a : {-1.0, 1.0})
-    for (double b : {-phi, phi}) p.insert(p.end(), {0, a, b, a, b, 0, b, 0, a});
+  for (double x : {-a, a})
+    for (double y : {-b, b}) p.insert(p.end(), {0, x, y, x, y, 0, y, 0, x});
   return p;
 }
+
+// The 12 corners of a regular icosahedron: cyclic permutations of (0, +-1, +-phi).
+static Points icosahedron_corners() { return cyclic_corners(1, (1 + std::sqrt(5.0)) / 2); }
 
 // The 20 corners of a regular dodecahedron: a cube's 8 and cyclic permutations of
 // (0, +-1/phi, +-phi).
@@ -408,8 +410,8 @@ static Points dodecahedron_corners() {
   Points p;
   for (int i = 0; i < 8; ++i)
     p.insert(p.end(), {i & 1 ? 1.0 : -1.0, i & 2 ? 1.0 : -1.0, i & 4 ? 1.0 : -1.0});
-  for (double a : {-1 / phi, 1 / phi})
-    for (double b : {-phi, phi}) p.insert(p.end(), {0, a, b, a, b, 0, b, 0, a});
+  const Points rest = cyclic_corners(1 / phi, phi);
+  p.insert(p.end(), rest.begin(), rest.end());
   return p;
 }
 

@@ -8,7 +8,6 @@
 // crumpled spots of real clouds they find none.)
 #include <cmath>
 #include <cstdint>
-#include <map>
 #include <utility>
 #include <vector>
 
@@ -112,37 +111,21 @@ struct Outcome {
   std::size_t open_edges = 0, over_full_edges = 0;
 };
 
-std::size_t open_edges(const moa::MeshState &mesh, std::size_t *over_full = nullptr) {
-  std::map<std::pair<uint32_t, uint32_t>, int> edges;
-  for (uint32_t f = 0; f < mesh.face_count(); ++f) {
-    if (!mesh.alive(f)) continue;
-    const Tri &t = mesh.stored(f);
-    for (int i = 0; i < 3; ++i) {
-      const uint32_t a = t[i], b = t[(i + 1) % 3];
-      ++edges[{std::min(a, b), std::max(a, b)}];
-    }
-  }
-  std::size_t open = 0;
-  for (const auto &[edge, count] : edges) {
-    open += count == 1;
-    if (over_full) *over_full += count > 2;
-  }
-  return open;
-}
-
 // Builds the blade's mesh with its hole, as the loop module would meet it; tries the patch with
 // the judgment of the earlier steps, then runs the last patch.
 Outcome patch_blade(const Blade &blade) {
   moa::test::HandMesh mesh(blade.xyz, blade.faces);
   assert_true(mesh.loaded());
   moa::GrowthState &g = mesh.g;
-  assert_int_equal(open_edges(g.mesh), 3);
+  assert_int_equal(moa::test::count_mesh(g.mesh).open_edges, 3);
 
   Outcome out;
   // The face taken out, put back as a patch by the relaxed judgment of the earlier steps.
   out.refused_earlier = !g.add_all_or_none({mesh.internal(blade.removed)}, true);
   out.closed_by_last_patch = moa::LoopFiller(g).patch_last_holes();
-  out.open_edges = open_edges(g.mesh, &out.over_full_edges);
+  const moa::test::MeshCounts counts = moa::test::count_mesh(g.mesh);
+  out.open_edges = counts.open_edges;
+  out.over_full_edges = counts.over_full_edges;
   return out;
 }
 

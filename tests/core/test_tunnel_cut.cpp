@@ -5,8 +5,6 @@
 // tube; the normals point away) keeps it.
 #include <cmath>
 #include <cstdint>
-#include <map>
-#include <set>
 #include <utility>
 #include <vector>
 
@@ -64,25 +62,11 @@ Outcome cut_tunnels(const Torus &torus) {
 
   Outcome out;
   out.cut = moa::cut_narrow_tunnels(g, 0);
-  std::map<std::pair<uint32_t, uint32_t>, int> edges;
-  std::set<uint32_t> used;
-  std::size_t faces = 0;
-  for (uint32_t f = 0; f < g.mesh.face_count(); ++f) {
-    if (!g.mesh.alive(f)) continue;
-    ++faces;
-    const Tri &t = g.mesh.stored(f);
-    for (int i = 0; i < 3; ++i) {
-      const uint32_t a = t[i], b = t[(i + 1) % 3];
-      ++edges[{std::min(a, b), std::max(a, b)}];
-      used.insert(a);
-    }
-  }
-  for (const auto &[edge, count] : edges) {
-    out.open_edges += count == 1;
-    out.over_full_edges += count > 2;
-  }
-  out.vertices_used = used.size();
-  const long chi = long(used.size()) - long(edges.size()) + long(faces);
+  const moa::test::MeshCounts counts = moa::test::count_mesh(g.mesh);
+  out.open_edges = counts.open_edges;
+  out.over_full_edges = counts.over_full_edges;
+  out.vertices_used = counts.vertices_used;
+  const long chi = counts.euler_characteristic();
   out.genus = (2 - chi) / 2;
   return out;
 }
