@@ -13,6 +13,7 @@
 #include <cmath>
 #include <initializer_list>
 #include <limits>
+#include <memory>
 #include <tuple>
 #include <unordered_map>
 #include <vector>
@@ -87,20 +88,22 @@ void append_ring(const MeshState &mesh, uint32_t v, std::vector<uint32_t> &out) 
 
 // Each vertex's ring (append_ring), listed on first use: the searches for waists ask for the
 // same rings many times over (each vertex's from each of its neighbours), and listing one walks
-// the vertex's faces. The mesh must not change while a Rings is in use.
+// the vertex's faces. The mesh must not change while a Rings is in use. Where each ring
+// starts is kept by vertex in a hash map: the searches list the rings of a few tens of
+// thousands of vertices spread through a cloud of millions, and two arrays over the cloud
+// took 8 MB at a million points, most of their pages touched.
 class Rings {
  public:
-  Rings(const MeshState &mesh, std::size_t points)
-      : mesh_(mesh), start_(points, kNone), size_(points, 0) {}
+  explicit Rings(const MeshState &mesh) : mesh_(mesh) {}
   // Valid until the next call.
   const uint32_t *of(uint32_t v, uint32_t &count) {
-    if (start_[v] == kNone) {
-      start_[v] = uint32_t(pool_.size());
+    auto [at, listed] = where_.try_emplace(v, uint32_t(pool_.size()), 0);
+    if (listed) {
       append_ring(mesh_, v, pool_);
-      size_[v] = uint32_t(pool_.size()) - start_[v];
+      at->second.second = uint32_t(pool_.size()) - at->second.first;
     }
-    count = size_[v];
-    return pool_.data() + start_[v];
+    count = at->second.second;
+    return pool_.data() + at->second.first;
   }
   void copy(uint32_t v, std::vector<uint32_t> &out) {
     uint32_t count;
@@ -110,18 +113,18 @@ class Rings {
 
  private:
   const MeshState &mesh_;
-  std::vector<uint32_t> start_, size_, pool_;  // where each ring starts in the pool, its size
+  std::unordered_map<uint32_t, std::pair<uint32_t, uint32_t>> where_;  // start in pool_, size
+  std::vector<uint32_t> pool_;
 };
 
 // Cycles of three edges that are not one face's, and of four edges without a chord, all edges
 // with two faces, through the given vertices. From each vertex u: a three-edge cycle joins two
 // of its neighbours; a four-edge cycle runs through two of them to a vertex x two steps away.
-std::vector<Cycle> short_cycles(const MeshState &mesh, const std::vector<uint32_t> &at,
-                                std::size_t points) {
+std::vector<Cycle> short_cycles(const MeshState &mesh, const std::vector<uint32_t> &at) {
   std::vector<Cycle> cycles;
   IndexMarks near, second;  // the neighbours of u, and the vertices two steps from it
   std::vector<uint32_t> ring, ring_v, far, common;
-  Rings rings(mesh, points);
+  Rings rings(mesh);
   auto neighbours = [&](uint32_t v, std::vector<uint32_t> &out) { rings.copy(v, out); };
   for (uint32_t u : at) {
     neighbours(u, ring);
@@ -189,10 +192,10 @@ class TunnelFinder {
  public:
   explicit TunnelFinder(GrowthState &g)
       : g_(g),
-        dist_(g.points.size(), kFar),
-        pred_(g.points.size(), kNone),
-        hops_(g.points.size(), 0),
-        rings_(g.mesh, g.points.size()) {}
+        dist_(new double[g.points.size()]),
+        pred_(new uint32_t[g.points.size()]),
+        hops_(new uint8_t[g.points.size()]),
+        rings_(g.mesh) {}
 
   // The shortest tunnel waist through each vertex of `at` (with a closed fan, on a piece
   // that can have handles), where it has one; whether it separates the surface is left to
@@ -285,8 +288,8 @@ class TunnelFinder {
     // Each corner is at most half the waist from s, the shorter way round; the corners'
     // spacings may be larger than s's own.
     const double reach = kBranchReach * kMaxTunnelWaist * g_.nb.spacing[s];
-    for (uint32_t v : touched_) dist_[v] = kFar;
-    touched_.assign(1, s);
+    reached_.clear();
+    reached_.set(s);
     settled_.clear();
     dist_[s] = 0;
     pred_[s] = kNone;
@@ -304,8 +307,8 @@ class TunnelFinder {
       for (uint32_t j = 0; j < count; ++j) {
         const uint32_t x = around[j];
         const double nd = d + dist(w[u], w[x]);
-        if (nd > reach || nd >= dist_[x]) continue;
-        if (dist_[x] == kFar) touched_.push_back(x);
+        if (nd > reach || nd >= distance(x)) continue;
+        if (!reached_.has(x)) reached_.set(x);
         dist_[x] = nd;
         pred_[x] = u;
         hops_[x] = uint8_t(hops_[u] + 1);
@@ -319,7 +322,7 @@ class TunnelFinder {
       const uint32_t *around = ring(u, count);
       for (uint32_t j = 0; j < count; ++j)
         if (const uint32_t x = around[j];
-            u < x && dist_[x] != kFar && pred_[u] != x && pred_[x] != u &&
+            u < x && reached_.has(x) && pred_[u] != x && pred_[x] != u &&
             hops_[u] + hops_[x] + 1 >= kMinTunnelCorners && hops_[u] + hops_[x] + 1 <= kMaxCorners)
           closing_.push_back({dist_[u] + dist_[x] + dist(w[u], w[x]), u, x});
     }
@@ -393,12 +396,15 @@ class TunnelFinder {
   GrowthState &g_;
   std::unordered_map<uint32_t, Piece> pieces_;  // by their classes' representative faces
   std::unordered_map<uint32_t, Vec3> normals_;  // outward_normal's, by vertex
-  // The search's distances along the edges from its start (kFar where not reached), the
-  // vertex each was reached from, and in how many edges.
-  std::vector<double> dist_;
-  std::vector<uint32_t> pred_;
-  std::vector<uint8_t> hops_;
-  std::vector<uint32_t> touched_, settled_, cycle_, sorted_;
+  // The search's distances along the edges from its start, the vertex each was reached from,
+  // and in how many edges: written where the search reaches (reached_) and read only there,
+  // so left unwritten elsewhere (see Rings).
+  double distance(uint32_t v) const { return reached_.has(v) ? dist_[v] : kFar; }
+  IndexMarks reached_;
+  std::unique_ptr<double[]> dist_;
+  std::unique_ptr<uint32_t[]> pred_;
+  std::unique_ptr<uint8_t[]> hops_;
+  std::vector<uint32_t> settled_, cycle_, sorted_;
   Rings rings_;
   std::vector<std::pair<double, uint32_t>> heap_;
   std::vector<Closing> closing_;
@@ -598,7 +604,7 @@ std::size_t cut_waists(GrowthState &g, const std::vector<Cycle> &waists) {
 std::size_t cut_thin_handles(GrowthState &g, std::size_t first_face) {
   // The cycles are sought only around the faces the loop module added, and one ring beyond:
   // a bridge becomes a handle when the holes beside it are closed.
-  return cut_waists(g, short_cycles(g.mesh, vertices_near(g.mesh, first_face), g.points.size()));
+  return cut_waists(g, short_cycles(g.mesh, vertices_near(g.mesh, first_face)));
 }
 
 std::size_t cut_narrow_tunnels(GrowthState &g, std::size_t first_face) {

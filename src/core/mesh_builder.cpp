@@ -286,6 +286,10 @@ void grow_parts(GrowthState &g, const Partition &parts, const std::function<void
   });
   (void)ended.load(std::memory_order_acquire);  // the order, for ThreadSanitizer (above)
   if (failure) std::rethrow_exception(failure);
+  // The parts' states were freed on the worker threads, into heaps that glibc keeps resident:
+  // handed back before the whole mesh's faces take their place (at a million points the peak
+  // of this stage 405 MB -> 360 on a noisy cloud, 371 -> 324 on a clean one).
+  return_free_memory();
   // Within a part every face was oriented consistently with its neighbours, and faces of
   // different parts share no edge yet: added as they are, they keep their orientation classes.
   for (std::size_t p = 0; p < count; ++p) {
@@ -304,9 +308,7 @@ void grow_parts(GrowthState &g, const Partition &parts, const std::function<void
     g.parts_rebuilds += rebuilds[p];
     g.parts_crossing_ms += crossing_ms[p];
   }
-  // The parts' memory was freed on the worker threads, into their own heaps: handed back
-  // before the mesh's Embree build, or the two add up (at a million points 446 bytes per
-  // point at the peak instead of 374).
+  // The part lists' memory too, before the mesh's Embree build, or the two add up.
   return_free_memory();
   g.crossings.add_all(g.mesh);
 }

@@ -148,6 +148,8 @@ class MeshState {
   TopologyVerdict check(const Tri &t);
   // Adds t (which must have passed check) and returns its face index.
   uint32_t add(const Tri &t);
+  // Whether the next add moves the face records (face_count() reached their capacity).
+  bool full() const { return faces_.size() == faces_.capacity(); }
   // Removes face f; its index is never reused.
   void remove(uint32_t f);
   // The corner of t where adding t would close one fan of a vertex that has other fans too
