@@ -288,7 +288,7 @@ void grow_parts(GrowthState &g, const Partition &parts, const std::function<void
   if (failure) std::rethrow_exception(failure);
   // The parts' states were freed on the worker threads, into heaps that glibc keeps resident:
   // handed back before the whole mesh's faces take their place (at a million points the peak
-  // of this stage 405 MB -> 360 on a noisy cloud, 371 -> 324 on a clean one).
+  // of this stage 405 MB -> 360 on a noisy cloud, 371 -> 328 on a clean one).
   return_free_memory();
   // Within a part every face was oriented consistently with its neighbours, and faces of
   // different parts share no edge yet: added as they are, they keep their orientation classes.
