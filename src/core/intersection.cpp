@@ -180,12 +180,11 @@ void CrossingIndex::rebuild(MeshState &mesh) {
   rtcSetSharedGeometryBuffer(geom.get(), RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                              vertices_.data(), 0, 3 * sizeof(float), points_.size());
   // Embree reads the mesh's own face records rather than a copy (removed faces included: every
-  // query skips them), so the index costs no memory; face_added rebuilds if they move. Past
-  // kMaxDeadShare removed faces, the scene holds a copy of the live ones instead.
+  // query skips them), so the index costs no memory; GrowthState::add_face rebuilds it when they
+  // move. Past kMaxDeadShare removed faces, the scene holds a copy of the live ones instead.
   const std::size_t count = mesh.face_count();
   const std::size_t live = count - mesh.removed_count();  // a removed face never comes back
   if (double(count - live) > kMaxDeadShare * double(count)) {
-    shared_records_ = nullptr;
     scene_corners_.clear();
     scene_faces_.clear();
     scene_corners_.reserve(3 * live);
@@ -201,9 +200,8 @@ void CrossingIndex::rebuild(MeshState &mesh) {
   } else {
     std::vector<uint32_t>().swap(scene_corners_);
     std::vector<uint32_t>().swap(scene_faces_);
-    shared_records_ = mesh.records();
     rtcSetSharedGeometryBuffer(geom.get(), RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                               shared_records_, offsetof(FaceRecord, corners), sizeof(FaceRecord),
+                               mesh.records(), offsetof(FaceRecord, corners), sizeof(FaceRecord),
                                count);
   }
   rtcCommitGeometry(geom.get());
@@ -225,9 +223,7 @@ void CrossingIndex::face_added(uint32_t f, MeshState &mesh) {
   // wade through them (the loop module removes about as many faces as it adds).
   const std::size_t pending = mesh.face_count() - committed_;
   const std::size_t removed = mesh.removed_count() - removed_at_build_;
-  if (pending + removed > std::max<std::size_t>(4096, committed_ / 2) ||
-      (scene_ && shared_records_ && mesh.records() != shared_records_))
-    rebuild(mesh);
+  if (pending + removed > std::max<std::size_t>(4096, committed_ / 2)) rebuild(mesh);
 }
 
 bool CrossingIndex::test_exact(const Tri &t, uint32_t f, MeshState &mesh) {

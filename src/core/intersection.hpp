@@ -34,7 +34,8 @@ class CrossingIndex {
   bool crosses(const Tri &t, double pad, MeshState &mesh, std::vector<uint32_t> &near);
   // Appends to `out` the live faces whose bounding boxes meet the box lo..hi.
   void faces_in_box(const Vec3 &lo, const Vec3 &hi, MeshState &mesh, std::vector<uint32_t> &out);
-  // Registers face f (already added to mesh).
+  // Registers face f (already added to mesh). The scene reads the mesh's face records in place:
+  // an add that moves them is followed by add_all instead (GrowthState::add_face).
   void face_added(uint32_t f, MeshState &mesh);
   // Registers every face of the mesh at once (one Embree build), after faces were added to
   // the mesh without face_added.
@@ -76,11 +77,10 @@ class CrossingIndex {
   std::vector<float> vertices_;  // Embree's shared vertex buffer, in its frame
   void *device_ = nullptr;
   void *scene_ = nullptr;
-  uint32_t committed_ = 0;                      // faces [0, committed_) are in the scene
-  std::size_t removed_at_build_ = 0;            // the mesh's removed_count() then
-  const FaceRecord *shared_records_ = nullptr;  // the mesh's faces as the scene reads them
-  std::vector<uint32_t> scene_corners_;         // or else the live faces' corners, when compacted,
-  std::vector<uint32_t> scene_faces_;           // and the face of each of the scene's primitives
+  uint32_t committed_ = 0;               // faces [0, committed_) are in the scene
+  std::size_t removed_at_build_ = 0;     // the mesh's removed_count() then
+  std::vector<uint32_t> scene_corners_;  // a compacted scene's copy of the live faces' corners
+  std::vector<uint32_t> scene_faces_;    // and the face of each of the scene's primitives
   double cell_ = 0;
   double pad_ = 0;  // of every broad-phase box (kPad in intersection.cpp)
   FaceGrid grid_;
