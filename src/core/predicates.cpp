@@ -6,6 +6,7 @@
 
 #include <gmpxx.h>
 
+#include <algorithm>
 #include <cmath>
 #include <initializer_list>
 
@@ -215,6 +216,67 @@ bool ray_in_sector(const Vec3 &v, const Vec3 &c, const Vec3 &d, const Vec3 &x) {
   return (o1 == s || o1 == 0) && (o2 == s || o2 == 0);
 }
 
+// Whether an axis perpendicular to an edge of t or f, in that triangle's plane, keeps the two
+// apart, decided in floating point with a margin far above the rounding. Any axis will do:
+// when the two closed triangles' projections onto it (whatever vector the rounded cross
+// products made it) are disjoint intervals, the triangles are disjoint. A projection's
+// rounding error stays below 8 eps times the sum of |x_k a_k|; the margin is 2^-40 of that
+// sum, and a NaN or an infinity never passes it. Neighbouring faces of a nearly flat patch
+// straddle each other's planes, so the plane tests cannot tell them apart while these axes
+// can: the long, thin faces between the lines of a CT contour stack sent millions of such
+// pairs to the six segment tests.
+bool apart_in_plane(const Vec3 t[3], const Vec3 f[3]) {
+  const Vec3 o = t[0];
+  const Vec3 tp[3] = {Vec3{0, 0, 0}, t[1] - o, t[2] - o};
+  const Vec3 fp[3] = {f[0] - o, f[1] - o, f[2] - o};
+  auto apart_along = [&](const Vec3 &a) {
+    double tlo = 0, thi = 0, flo = 0, fhi = 0, size = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double pt = dot(tp[k], a), pf = dot(fp[k], a);
+      tlo = k ? std::min(tlo, pt) : pt;
+      thi = k ? std::max(thi, pt) : pt;
+      flo = k ? std::min(flo, pf) : pf;
+      fhi = k ? std::max(fhi, pf) : pf;
+      size = std::max({size, std::fabs(tp[k].x * a.x) + std::fabs(tp[k].y * a.y) +
+                                 std::fabs(tp[k].z * a.z),
+                       std::fabs(fp[k].x * a.x) + std::fabs(fp[k].y * a.y) +
+                           std::fabs(fp[k].z * a.z)});
+    }
+    const double margin = 0x1p-40 * size;
+    if (!(margin > 0x1p-900)) return false;  // too small for a relative bound (or NaN)
+    return flo - thi > margin || tlo - fhi > margin;
+  };
+  for (const Vec3 *q : {tp, fp}) {
+    const Vec3 n = cross(q[1] - q[0], q[2] - q[0]);
+    for (int i = 0; i < 3; ++i)
+      if (apart_along(cross(q[(i + 1) % 3] - q[i], n))) return true;
+  }
+  return false;
+}
+
+// Whether triangles v a b and v c d, sharing only v, meet in v alone because a plane through v
+// has a and b strictly on one side and c and d strictly on the other: the plane whose normal
+// points from the directions of a and b toward those of c and d. Floating point with a margin,
+// as apart_in_plane, and for the same pairs: faces around a vertex of a flat patch, in each
+// other's planes, which the plane tests cannot separate.
+bool apart_at_vertex(const Vec3 &v, const Vec3 &a, const Vec3 &b, const Vec3 &c, const Vec3 &d) {
+  const Vec3 x[4] = {a - v, b - v, c - v, d - v};
+  Vec3 axis{0, 0, 0};
+  for (int k = 0; k < 4; ++k) {
+    const double len = std::sqrt(norm2(x[k]));
+    axis = axis + x[k] * (k < 2 ? -1 / len : 1 / len);
+  }
+  double size = 0, side[4];
+  for (int k = 0; k < 4; ++k) {
+    side[k] = dot(x[k], axis);
+    size = std::max(size, std::fabs(x[k].x * axis.x) + std::fabs(x[k].y * axis.y) +
+                              std::fabs(x[k].z * axis.z));
+  }
+  const double margin = 0x1p-40 * size;
+  if (!(margin > 0x1p-900)) return false;  // too small for a relative bound (or NaN)
+  return side[0] < -margin && side[1] < -margin && side[2] > margin && side[3] > margin;
+}
+
 }  // namespace
 
 int orient3d(const Vec3 &a, const Vec3 &b, const Vec3 &c, const Vec3 &d) {
@@ -297,6 +359,7 @@ bool triangles_cross(const Vec3 t[3], const unsigned it[3], const Vec3 f[3], con
   };
   if (shared < 2 && (strictly_one_side(t, f, sf) || strictly_one_side(f, t, st))) return false;
   if (shared == 0) {
+    if (apart_in_plane(t, f)) return false;
     for (int i = 0; i < 3; ++i) {
       if (segment_meets_triangle(t[i], t[(i + 1) % 3], f[0], f[1], f[2])) return true;
       if (segment_meets_triangle(f[i], f[(i + 1) % 3], t[0], t[1], t[2])) return true;
@@ -318,6 +381,7 @@ bool triangles_cross(const Vec3 t[3], const unsigned it[3], const Vec3 f[3], con
   j = st[i];
   const Vec3 &v = t[i], &a = t[(i + 1) % 3], &b = t[(i + 2) % 3];
   const Vec3 &c = f[(j + 1) % 3], &d = f[(j + 2) % 3];
+  if (apart_at_vertex(v, a, b, c, d)) return false;
   if (segment_meets_triangle(a, b, v, c, d) || segment_meets_triangle(c, d, v, a, b)) return true;
   // An edge leaving v that lies in the other triangle's plane and inside its corner at v.
   if (orient3d(v, c, d, a) == 0 && ray_in_sector(v, c, d, a)) return true;
