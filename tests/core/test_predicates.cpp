@@ -152,8 +152,9 @@ void crossing_of_coplanar_triangles(void **) {
     (compare_crossing(t, f, share, "slanted plane", i) ? met : apart)[share]++;
   }
   // Faces of a fan around a corner v: t = v a b, and f = v b' c, whose edge v b' is t's edge
-  // v b turned a hair into t or out of it, and c is a mirrored about v b. The two meet only in
-  // v, or overlap in a sliver too thin to see in floating point.
+  // v b turned a hair into t or out of it, and c is a mirrored about v b (in the plane's own
+  // coordinates). The two meet only in v, or overlap in a sliver too thin to see in floating
+  // point.
   for (int i = 0; i < 4000; ++i) {
     const double s0 = coord(rng), t0 = coord(rng), r = 0.01 + unit(rng), wide = 0.2 + unit(rng);
     const double ab = 3.0 * coord(rng), hair = std::pow(10.0, -14.0 * unit(rng));
