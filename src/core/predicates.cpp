@@ -216,15 +216,26 @@ bool ray_in_sector(const Vec3 &v, const Vec3 &c, const Vec3 &d, const Vec3 &x) {
   return (o1 == s || o1 == 0) && (o2 == s || o2 == 0);
 }
 
+// The size that bounds the rounding of dot(x, a): the sum of |x_k a_k|.
+double abs_dot(const Vec3 &x, const Vec3 &a) {
+  return std::fabs(x.x * a.x) + std::fabs(x.y * a.y) + std::fabs(x.z * a.z);
+}
+
+// How far apart two projections must lie to be apart for certain, given `size`, the abs_dot of
+// the projections compared summed (a sum, not a maximum, so that a NaN carries through): 2^-40
+// of it, far above their rounding (each below 8 eps of it); infinity, which no difference exceeds, for a NaN or infinite
+// size or one under 2^-860, too small for a bound relative to it.
+double projection_margin(double size) {
+  return size > 0x1p-860 && size < HUGE_VAL ? 0x1p-40 * size : HUGE_VAL;
+}
+
 // Whether an axis perpendicular to an edge of t or f, in that triangle's plane, keeps the two
 // apart, decided in floating point with a margin far above the rounding. Any axis will do:
 // when the two closed triangles' projections onto it (whatever vector the rounded cross
-// products made it) are disjoint intervals, the triangles are disjoint. A projection's
-// rounding error stays below 8 eps times the sum of |x_k a_k|; the margin is 2^-40 of that
-// sum, and a NaN or an infinity never passes it. Neighbouring faces of a nearly flat patch
-// straddle each other's planes, so the plane tests cannot tell them apart while these axes
-// can: the long, thin faces between the lines of a CT contour stack sent millions of such
-// pairs to the six segment tests.
+// products made it) are disjoint intervals, the triangles are disjoint (projection_margin
+// makes "disjoint" certain). Neighbouring faces of a nearly flat patch straddle each other's
+// planes, so the plane tests cannot tell them apart while these axes can: the long, thin faces
+// between the lines of a CT contour stack sent millions of such pairs to the six segment tests.
 bool apart_in_plane(const Vec3 t[3], const Vec3 f[3]) {
   const Vec3 o = t[0];
   const Vec3 tp[3] = {Vec3{0, 0, 0}, t[1] - o, t[2] - o};
@@ -237,13 +248,9 @@ bool apart_in_plane(const Vec3 t[3], const Vec3 f[3]) {
       thi = k ? std::max(thi, pt) : pt;
       flo = k ? std::min(flo, pf) : pf;
       fhi = k ? std::max(fhi, pf) : pf;
-      size = std::max({size, std::fabs(tp[k].x * a.x) + std::fabs(tp[k].y * a.y) +
-                                 std::fabs(tp[k].z * a.z),
-                       std::fabs(fp[k].x * a.x) + std::fabs(fp[k].y * a.y) +
-                           std::fabs(fp[k].z * a.z)});
+      size += abs_dot(tp[k], a) + abs_dot(fp[k], a);
     }
-    const double margin = 0x1p-40 * size;
-    if (!(margin > 0x1p-900)) return false;  // too small for a relative bound (or NaN)
+    const double margin = projection_margin(size);
     return flo - thi > margin || tlo - fhi > margin;
   };
   for (const Vec3 *q : {tp, fp}) {
@@ -269,11 +276,9 @@ bool apart_at_vertex(const Vec3 &v, const Vec3 &a, const Vec3 &b, const Vec3 &c,
   double size = 0, side[4];
   for (int k = 0; k < 4; ++k) {
     side[k] = dot(x[k], axis);
-    size = std::max(size, std::fabs(x[k].x * axis.x) + std::fabs(x[k].y * axis.y) +
-                              std::fabs(x[k].z * axis.z));
+    size += abs_dot(x[k], axis);
   }
-  const double margin = 0x1p-40 * size;
-  if (!(margin > 0x1p-900)) return false;  // too small for a relative bound (or NaN)
+  const double margin = projection_margin(size);
   return side[0] < -margin && side[1] < -margin && side[2] > margin && side[3] > margin;
 }
 
