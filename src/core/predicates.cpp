@@ -223,8 +223,8 @@ double abs_dot(const Vec3 &x, const Vec3 &a) {
 
 // How far apart two projections must lie to be apart for certain, given `size`, the abs_dot of
 // the projections compared summed (a sum, not a maximum, so that a NaN carries through): 2^-40
-// of it, far above their rounding (each below 8 eps of it); infinity, which no difference exceeds, for a NaN or infinite
-// size or one under 2^-860, too small for a bound relative to it.
+// of it, far above their rounding (each below 8 eps of it); infinity, which no difference
+// exceeds, for a NaN or infinite size or one under 2^-860, too small for a bound relative to it.
 double projection_margin(double size) {
   return size > 0x1p-860 && size < HUGE_VAL ? 0x1p-40 * size : HUGE_VAL;
 }

@@ -113,8 +113,7 @@ void orient_exact_grid_points(void **) {
 // Whether the library's crossing test agrees with the support library's on triangle t and
 // triangle f, which share t's corner 0 when `share` is set; fails the test on a disagreement.
 // Returns the verdict.
-bool compare_crossing(const Vec3 (&t)[3], const Vec3 (&f)[3], bool share, const char *what,
-                      int i) {
+bool compare_crossing(const Vec3 (&t)[3], const Vec3 (&f)[3], bool share, const char *what, int i) {
   const unsigned it[3] = {0, 1, 2}, jf[3] = {share ? 0u : 3u, 4, 5};
   const bool got = moa::triangles_cross(t, it, f, jf);
   const moa::test::Vec3 tt[3] = {to_test(t[0]), to_test(t[1]), to_test(t[2])};
