@@ -437,7 +437,9 @@ void fill_loops(GrowthState &g, const std::function<void(double)> &tick) {
   // The take-in and the round above add faces after the last drop: a bubble that stray points
   // closed among themselves goes now.
   g.stats.triangles_removed += LoopFiller(g).drop_stray_pieces(false);
-  // The holes that every step above left open, once more with sharper folds allowed.
+  // The holes that every step above left open: first those of next to no area, whose patch
+  // would be a needle; then the others once more, with sharper folds allowed.
+  LoopFiller(g).close_slits();
   LoopFiller(g).patch_last_holes();
   g.stats.boundary_loops_after = LoopFiller(g).count_loops();
   report(1.0);

@@ -2,7 +2,8 @@
 //   loop_tracing.cpp  the boundary loops, and which of them are holes to fill;
 //   loop_filler.cpp   filling them by MOA among their own vertices, and the stage's order;
 //   hole_repair.cpp   widening and patching the holes the filling could not close;
-//   loop_pieces.cpp   stray pieces dropped, strips between two pieces zipped shut.
+//   loop_pieces.cpp   stray pieces dropped, strips between two pieces zipped shut;
+//   slit_closing.cpp  holes of next to no area along one edge, closed by splitting its face.
 // Internal to the library: fill_loops (growth_state.hpp) is the stage's entry point.
 #pragma once
 
@@ -118,6 +119,9 @@ class LoopFiller {
   // Pieces (loop_pieces.cpp): strips between two pieces closed; stray pieces removed.
   std::size_t zip_parallel_loops();
   std::size_t drop_stray_pieces(bool layers = true);
+  // Slits (slit_closing.cpp): holes lying along one of their edges, closed by splitting the
+  // face across it.
+  std::size_t close_slits();
 
  private:
   // loop_tracing.cpp
