@@ -2,8 +2,8 @@
 // They appear where points sit in a row (a contour of a CT stack running straight across a
 // face parallel to the cuts): the triangle over the row and the long edge would be a needle,
 // so neither Algorithm 1 nor the patches can close them. The face on the other side of the
-// long edge is split instead, into the fan from its third corner to the row, whose triangles
-// are no thinner than the face was.
+// long edge is split instead, into the fan from its third corner to the row, when every
+// triangle of the fan passes the relaxed judgment.
 #include <algorithm>
 #include <cmath>
 #include <limits>

@@ -51,7 +51,7 @@ struct SlitCube {
     c = grid(2, 1, 3, 3);
     const uint32_t c_up = grid(2, 1, 3, 4), a_up = grid(2, 1, 2, 4);
     const uint32_t a_down = grid(2, 1, 2, 2), c_down = grid(2, 1, 3, 2);
-    // Above the edge: a C c_up on it, so its third corner x is c_up.
+    // Above the edge: the face A C c_up on it, so its third corner x is c_up.
     face(a, c, c_up);
     face(a, c_up, a_up);
     x = c_up;
@@ -112,7 +112,7 @@ struct Outcome {
   std::size_t closed = 0;
   moa::test::MeshCounts before, after;
   bool face_above_kept = false;  // the face on the edge A C is still there
-  bool fan_from_x = false;       // the faces x C B2, x B2 B1, x B1 A are there
+  bool fan_from_x = false;       // three faces added, each with x as a corner
 };
 
 Outcome close_slits_of(const SlitCube &cube) {
