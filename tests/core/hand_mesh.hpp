@@ -64,6 +64,20 @@ class HandMesh {
   GrowthState g;
 };
 
+// Triangle a b c of `xyz` (x y z per point), its corners ordered so that it faces away from
+// `centre`: a face of a convex solid meshed by hand, facing outward.
+inline Tri facing_away(const std::vector<double> &xyz, uint32_t a, uint32_t b, uint32_t c,
+                       const double (&centre)[3]) {
+  const double *p = &xyz[3 * a], *q = &xyz[3 * b], *r = &xyz[3 * c];
+  const double u[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]};
+  const double w[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
+  const double n[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
+                       u[0] * w[1] - u[1] * w[0]};
+  const double out[3] = {p[0] - centre[0], p[1] - centre[1], p[2] - centre[2]};
+  if (n[0] * out[0] + n[1] * out[1] + n[2] * out[2] >= 0) return {a, b, c};
+  return {a, c, b};
+}
+
 // The live faces of a mesh counted by their edges and vertices.
 struct MeshCounts {
   std::size_t faces = 0, edges = 0, vertices_used = 0;

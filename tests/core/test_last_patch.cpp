@@ -71,7 +71,8 @@ struct Blade {
     }
     for (int j : {0, n}) {
       face(edge[j], top[1][j], bottom[1][j]);
-      for (int i = 1; i + 1 < n; ++i) quad(top[i][j], top[i + 1][j], bottom[i + 1][j], bottom[i][j]);
+      for (int i = 1; i + 1 < n; ++i)
+        quad(top[i][j], top[i + 1][j], bottom[i + 1][j], bottom[i][j]);
       face(top[n - 1][j], top[n][j], back[j]);
       face(top[n - 1][j], back[j], bottom[n - 1][j]);
       face(bottom[n - 1][j], back[j], bottom[n][j]);
@@ -92,16 +93,7 @@ struct Blade {
 
   // Adds triangle a b c facing away from the prism's centroid (2/3, 1/2, 0): it is convex.
   void face(uint32_t a, uint32_t b, uint32_t c) {
-    const double *p = &xyz[3 * a], *q = &xyz[3 * b], *r = &xyz[3 * c];
-    const double u[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]};
-    const double w[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
-    const double nrm[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
-                           u[0] * w[1] - u[1] * w[0]};
-    const double out[3] = {p[0] - 2.0 / 3.0, p[1] - 0.5, p[2]};
-    if (nrm[0] * out[0] + nrm[1] * out[1] + nrm[2] * out[2] >= 0)
-      faces.push_back({a, b, c});
-    else
-      faces.push_back({a, c, b});
+    faces.push_back(moa::test::facing_away(xyz, a, b, c, {2.0 / 3.0, 0.5, 0.0}));
   }
 };
 

@@ -86,16 +86,7 @@ struct SlitCube {
 
   // Adds triangle p q r facing away from the centre: the cube is convex.
   void face(uint32_t p, uint32_t q, uint32_t r) {
-    const double *P = &xyz[3 * p], *Q = &xyz[3 * q], *R = &xyz[3 * r];
-    const double u[3] = {Q[0] - P[0], Q[1] - P[1], Q[2] - P[2]};
-    const double w[3] = {R[0] - P[0], R[1] - P[1], R[2] - P[2]};
-    const double nrm[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
-                           u[0] * w[1] - u[1] * w[0]};
-    const double out[3] = {P[0] - 0.5, P[1] - 0.5, P[2] - 0.5};
-    if (nrm[0] * out[0] + nrm[1] * out[1] + nrm[2] * out[2] >= 0)
-      faces.push_back({p, q, r});
-    else
-      faces.push_back({p, r, q});
+    faces.push_back(moa::test::facing_away(xyz, p, q, r, {0.5, 0.5, 0.5}));
   }
 
   // A thin triangle standing upright in the hole, at y halfway between the edge and the row,
