@@ -441,6 +441,8 @@ void fill_loops(GrowthState &g, const std::function<void(double)> &tick) {
   // would be a needle; then the others once more, with sharper folds allowed.
   LoopFiller(g).close_slits();
   LoopFiller(g).patch_last_holes();
+  // In a contour stack, what is left between two contours is a band too wide for the above.
+  LoopFiller(g).stitch_bands();
   g.stats.boundary_loops_after = LoopFiller(g).count_loops();
   report(1.0);
 }

@@ -3,7 +3,8 @@
 //   loop_filler.cpp   filling them by MOA among their own vertices, and the stage's order;
 //   hole_repair.cpp   widening and patching the holes the filling could not close;
 //   loop_pieces.cpp   stray pieces dropped, strips between two pieces zipped shut;
-//   slit_closing.cpp  holes of next to no area along one edge, closed by splitting its face.
+//   slit_closing.cpp  holes of next to no area along one edge, closed by splitting its face;
+//   band_stitching.cpp  the band between two contours of a contour stack, stitched.
 // Internal to the library: fill_loops (growth_state.hpp) is the stage's entry point.
 #pragma once
 
@@ -122,6 +123,8 @@ class LoopFiller {
   // Slits (slit_closing.cpp): holes lying along one of their edges, closed by splitting the
   // face across it.
   std::size_t close_slits();
+  // Bands (band_stitching.cpp): a contour stack's holes between two contours, stitched.
+  std::size_t stitch_bands();
 
  private:
   // loop_tracing.cpp
