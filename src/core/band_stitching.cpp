@@ -6,7 +6,6 @@
 // next point of whichever run gives the shorter new edge across (the classic way to tile the
 // space between two contours), each triangle through the relaxed judgment; where one fails,
 // the rest of the band is stitched from its other end, as far as the judgment allows.
-#include <algorithm>
 #include <cstddef>
 #include <vector>
 
@@ -83,10 +82,7 @@ std::size_t LoopFiller::stitch_bands() {
     const std::vector<uint32_t> &v = loop.vertices;
     const std::size_t n = v.size();
     if (n < 4 || n > kMaxBandLoop) continue;
-    sorted = v;
-    std::sort(sorted.begin(), sorted.end());
-    if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) continue;  // pinched
-    if (std::any_of(v.begin(), v.end(), [&](uint32_t x) { return g_.in_tangle(x); })) continue;
+    if (!simple_and_untangled(v, sorted)) continue;
     across.clear();
     for (std::size_t i = 0; i < n && across.size() <= 2; ++i)
       if (!along_line(g_, v[i], v[(i + 1) % n])) across.push_back(i);

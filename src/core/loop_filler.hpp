@@ -140,6 +140,9 @@ class LoopFiller {
   void classify_and_pool();
   std::unordered_map<uint32_t, std::size_t> faces_per_component();
   bool still_open(const std::vector<uint32_t> &loop) const;
+  // Whether the loop passes each vertex once and none of a tangle; `sorted` gets its vertices
+  // in order.
+  bool simple_and_untangled(const std::vector<uint32_t> &loop, std::vector<uint32_t> &sorted) const;
 
   // loop_filler.cpp
   void cap_flat_cuts();

@@ -72,6 +72,14 @@ bool LoopFiller::still_open(const std::vector<uint32_t> &loop) const {
   return true;
 }
 
+bool LoopFiller::simple_and_untangled(const std::vector<uint32_t> &loop,
+                                      std::vector<uint32_t> &sorted) const {
+  sorted = loop;
+  std::sort(sorted.begin(), sorted.end());
+  if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return false;  // pinched
+  return std::none_of(loop.begin(), loop.end(), [&](uint32_t x) { return g_.in_tangle(x); });
+}
+
 // Hole edges: the reverse of each boundary edge of a face, so that a face filling the hole
 // along it keeps the orientation.
 void LoopFiller::collect_hole_edges() {

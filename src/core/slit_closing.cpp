@@ -54,10 +54,7 @@ std::size_t LoopFiller::close_slits() {
     const std::vector<uint32_t> &v = loop.vertices;
     const std::size_t n = v.size();
     if (n < 3 || n > kMaxSlitLoop) continue;
-    sorted = v;
-    std::sort(sorted.begin(), sorted.end());
-    if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) continue;  // pinched
-    if (std::any_of(v.begin(), v.end(), [&](uint32_t x) { return g_.in_tangle(x); })) continue;
+    if (!simple_and_untangled(v, sorted)) continue;
     g_.poll();
     if (!still_open(v)) continue;
     std::size_t edge = n;
