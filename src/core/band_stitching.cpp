@@ -51,21 +51,6 @@ std::vector<Tri> stitched(const std::vector<uint32_t> &a, const std::vector<uint
   return tris;
 }
 
-// Adds the triangles in order while each passes the relaxed judgment; returns how many.
-template <class It>
-std::size_t add_while_accepted(GrowthState &g, It first, It last) {
-  std::size_t added = 0;
-  for (; first != last; ++first) {
-    const Verdict v = g.judge.judge(*first, nullptr, 0, true);
-    TopologyJudge::count(v, g.stats);
-    if (v != Verdict::Accept) break;
-    g.add_face(*first);
-    ++added;
-  }
-  g.stats.triangles_loops += added;
-  return added;
-}
-
 }  // namespace
 
 // Stitches the bands of a lined cloud as far as the relaxed judgment allows, from both ends;
@@ -75,7 +60,7 @@ std::size_t LoopFiller::stitch_bands() {
   collect_hole_edges();
   loops_ = trace_loops();
   std::size_t closed = 0;
-  std::vector<uint32_t> sorted, a, b;
+  std::vector<uint32_t> sorted, a, b, added;
   std::vector<std::size_t> across;
   const std::vector<Vec3> &w = g_.points.work;
   for (const Loop &loop : loops_) {
@@ -100,10 +85,12 @@ std::size_t LoopFiller::stitch_bands() {
     // From the end where b meets a[0], as far as the judgment lets the stitch go; the rest of
     // the list, which stitches what is left open, from its last triangle back toward there.
     const std::vector<Tri> tris = stitched(a, b, w);
-    const std::size_t forward = add_while_accepted(g_, tris.begin(), tris.end());
-    const std::size_t left = tris.size() - forward;
-    closed += left == 0 ||
-              add_while_accepted(g_, tris.rbegin(), tris.rbegin() + std::ptrdiff_t(left)) == left;
+    added.clear();
+    g_.add_while_accepted(tris.begin(), tris.end(), added);
+    const std::size_t left = tris.size() - added.size();
+    if (left > 0) g_.add_while_accepted(tris.rbegin(), tris.rbegin() + std::ptrdiff_t(left), added);
+    g_.stats.triangles_loops += added.size();
+    closed += added.size() == tris.size();
   }
   return closed;
 }

@@ -48,18 +48,26 @@ struct GrowthState {
     return f;
   }
 
+  // Adds the triangles first..last in order while each passes the relaxed judgment (see
+  // TopologyJudge::judge for layers_allowed and flat_corners), counting the verdicts; appends
+  // the faces added to `added`.
+  template <class It>
+  void add_while_accepted(It first, It last, std::vector<uint32_t> &added,
+                          bool layers_allowed = false, bool flat_corners = false) {
+    for (; first != last; ++first) {
+      const Verdict v = judge.judge(*first, nullptr, 0, true, layers_allowed, flat_corners);
+      TopologyJudge::count(v, stats);
+      if (v != Verdict::Accept) return;
+      added.push_back(add_face(*first));
+    }
+  }
+
   // Adds the triangles in order if each passes the relaxed judgment (the loop module's patches
-  // and splits; see TopologyJudge::judge for layers_allowed and flat_corners), counting the
-  // verdicts; if one fails, takes back those added and returns false.
+  // and splits), counting the verdicts; if one fails, takes back those added and returns false.
   bool add_all_or_none(const std::vector<Tri> &tris, bool layers_allowed = false,
                        bool flat_corners = false) {
     std::vector<uint32_t> added;
-    for (const Tri &t : tris) {
-      Verdict v = judge.judge(t, nullptr, 0, true, layers_allowed, flat_corners);
-      TopologyJudge::count(v, stats);
-      if (v != Verdict::Accept) break;
-      added.push_back(add_face(t));
-    }
+    add_while_accepted(tris.begin(), tris.end(), added, layers_allowed, flat_corners);
     if (added.size() == tris.size()) return true;
     for (uint32_t f : added) mesh.remove(f);
     return false;
