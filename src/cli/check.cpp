@@ -37,12 +37,17 @@ const char *const kCheckHelp =
 
 namespace {
 
-// The Markdown report and, beside it, its histogram picture (REPORT.md -> REPORT_angles.png).
-void write_report(const std::string &path, const std::string &mesh_path, const MeshReport &r) {
-  std::string stem = path;
+// The histogram picture beside a Markdown report: REPORT.md -> REPORT_angles.png.
+std::string angles_image_path(const std::string &report_path) {
+  std::string stem = report_path;
   const size_t slash = stem.find_last_of('/'), dot = stem.find_last_of('.');
   if (dot != std::string::npos && (slash == std::string::npos || dot > slash)) stem.erase(dot);
-  const std::string image = stem + "_angles.png";
+  return stem + "_angles.png";
+}
+
+// The Markdown report and, beside it, its histogram picture.
+void write_report(const std::string &path, const std::string &mesh_path, const MeshReport &r) {
+  const std::string image = angles_image_path(path);
   const render::Image chart = render::plot_histogram(
       std::vector<size_t>(r.min_angle_histogram.begin(), r.min_angle_histogram.end()), 0, 5);
   try {
@@ -83,6 +88,10 @@ int run_check(int argc, char **argv) {
     }
   }
   if (mesh_path.empty()) throw CliError(kExitUsage, "missing MESH (see moa check --help)");
+  if (!report_path.empty()) {
+    check_writable(report_path);
+    check_writable(angles_image_path(report_path));
+  }
 
   io::MeshData mesh;
   try {

@@ -86,5 +86,9 @@ inline double ms_since(Clock::time_point start) {
 
 // "path: what" unless `what` already names the path (the io library's messages do).
 std::string about_file(const std::string &path, const std::string &what);
+// Throws CliError(kExitOutput) when a file cannot be written at `path` (its folder is missing
+// or read-only, or the path names a folder): called before the long parts, so that a run of
+// minutes does not end in "cannot write". Creates nothing; the file is written at the end.
+void check_writable(const std::string &path);
 
 }  // namespace moa::cli

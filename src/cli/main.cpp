@@ -1,5 +1,9 @@
 // The `moa` command-line tool: dispatches to one command per file and turns every error into
 // one line on stderr and a documented exit code.
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -133,6 +137,22 @@ void ArgWalker::unknown() const {
 std::string about_file(const std::string &path, const std::string &what) {
   if (what.compare(0, path.size(), path) == 0) return what;
   return path + ": " + what;
+}
+
+void check_writable(const std::string &path) {
+  auto refuse = [&](int error) {
+    throw CliError(kExitOutput, path + ": cannot write: " + std::strerror(error));
+  };
+  struct stat st;
+  if (::stat(path.c_str(), &st) == 0) {
+    if (S_ISDIR(st.st_mode)) refuse(EISDIR);
+    if (::access(path.c_str(), W_OK) != 0) refuse(errno);
+    return;
+  }
+  // Not there yet: its folder must exist and take a new file.
+  const std::size_t slash = path.find_last_of('/');
+  const std::string folder = slash == std::string::npos ? "." : path.substr(0, slash + 1);
+  if (::access(folder.c_str(), W_OK | X_OK) != 0) refuse(errno);
 }
 
 }  // namespace moa::cli

@@ -129,6 +129,7 @@ int run_render(int argc, char **argv) {
     return kExitOk;
   }
   check_png_path(o.image);
+  check_writable(o.image);
   io::MeshData mesh;
   try {
     mesh = io::read_mesh(o.mesh);

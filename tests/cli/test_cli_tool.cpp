@@ -169,6 +169,34 @@ void test_errors(void **) {
   expect_error(moa("params --json"), 2, {"unknown option '--json'"});
 }
 
+// Every file a command will write is checked before the input is read and the work done: a
+// missing folder or a folder in the file's place ends the command at once. Each case pairs the
+// bad output with a malformed input, which fails with exit code 3 only once it is read.
+void test_outputs_checked_first(void **) {
+  const std::string bad = path("bad_input.xyz"), missing = path("no/such/dir/");
+  write_file(bad, "0 0 0\n1 0 0\n1 2\n");
+  const std::string folder = path("a_folder.ply");
+  ::mkdir(folder.c_str(), 0755);
+  expect_error(moa("reconstruct " + quote(bad) + " -o " + quote(missing + "out.ply")), 5,
+               {"no/such/dir/out.ply: cannot write"});
+  expect_error(moa("reconstruct " + quote(bad) + " -o " + quote(folder)), 5,
+               {"a_folder.ply: cannot write"});
+  const std::string out = path("never_written.ply");
+  expect_error(moa("reconstruct " + quote(bad) + " -o " + quote(out) + " --stats " +
+                   quote(missing + "s.json")),
+               5, {"s.json: cannot write"});
+  expect_error(moa("reconstruct " + quote(bad) + " -o " + quote(out) + " --render " +
+                   quote(missing + "p.png")),
+               5, {"p.png: cannot write"});
+  assert_false(exists(out));  // checked, not created
+  expect_error(moa("render " + quote(path("missing.ply")) + " -o " + quote(missing + "p.png")), 5,
+               {"p.png: cannot write"});
+  expect_error(moa("check " + quote(path("missing.ply")) + " --report " + quote(missing + "r.md")),
+               5, {"r.md: cannot write"});
+  // A file in a folder that exists is fine: the malformed input is what fails.
+  expect_error(moa("reconstruct " + quote(bad) + " -o " + quote(out)), 3, {"bad_input.xyz"});
+}
+
 }  // namespace
 
 int main(int argc, char **argv) {
@@ -181,6 +209,7 @@ int main(int argc, char **argv) {
       cmocka_unit_test(test_summary_of_one_triangle),
       cmocka_unit_test(test_check_known_meshes),
       cmocka_unit_test(test_errors),
+      cmocka_unit_test(test_outputs_checked_first),
   };
   return cmocka_run_group_tests(tests, setup, nullptr);
 }

@@ -162,7 +162,13 @@ void test_check_report(void **) {
       moa("check --json " + quote(cube_file()) + " --report=" + quote(path("cube_report.md"))));
   assert_true(exists(path("cube_report_angles.png")));
   expect_error(moa("check " + quote(cube_file()) + " --report " + quote(path("no/dir/r.md"))), 5,
-               {"r_angles.png"});
+               {"r.md: cannot write"});
+  // The picture's name is taken by a folder: refused before the mesh is read.
+  ::mkdir(path("blocked_angles.png").c_str(), 0755);
+  expect_error(
+      moa("check " + quote(path("missing.ply")) + " --report " + quote(path("blocked.md"))), 5,
+      {"blocked_angles.png: cannot write"});
+  assert_false(exists(path("blocked.md")));
 }
 
 }  // namespace
