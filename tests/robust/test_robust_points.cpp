@@ -71,11 +71,19 @@ void collinear_points(void **) {
   EXPECT_REJECTED(line, MOA_ERROR_INVALID_INPUT, "moa_run", "collinear");
   EXPECT_REJECTED(axis, MOA_ERROR_INVALID_INPUT, "collinear");
   EXPECT_REJECTED(dyadic, MOA_ERROR_INVALID_INPUT, "collinear");
-  // Collinear up to rounding is not exactly collinear: a defined success, C1-C5 kept.
-  Points rounded;
+  // Collinear up to rounding is not exactly collinear: a defined success, C1-C5 kept, and no
+  // triangle, as the points span no surface (moa.h, moa_run). So too with one point moved
+  // 1e-7 off a line 370 long.
+  Points rounded, bent = line;
   for (int i = 0; i < 100; ++i) rounded.insert(rounded.end(), {i * 0.1, i * 0.2, i * 0.3});
+  bent[3 * 50] += 1e-7;
   moa_ctx *ctx = robust::new_ctx();
-  EXPECT_RUN_OK(ctx, rounded);
+  for (const Points *p : {&rounded, &bent}) {
+    assert_int_equal(EXPECT_RUN_OK(ctx, *p), 0);
+    moa_stats stats;
+    assert_int_equal(moa_get_stats(ctx, &stats, sizeof stats), MOA_OK);
+    assert_int_equal(stats.unused_points, 100);
+  }
   moa_ctx_destroy(ctx);
 }
 
