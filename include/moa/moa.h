@@ -194,8 +194,8 @@ MOA_API moa_status moa_set_progress_callback(moa_ctx *ctx, moa_progress_fn callb
  * On failure the previous mesh is discarded and the context stays usable.
  * MOA_OK promises the output contract, not a closed mesh or every point used: borders wider
  * than the parameter hole_size stay open (moa_stats.boundary_edges), points no accepted
- * triangle reaches stay out (moa_stats.unused_points), and points that span no surface (all
- * within a hair of one line) give a mesh of no triangles. */
+ * triangle reaches stay out (moa_stats.unused_points), and points that span no surface (on one
+ * line but for rounding or a tiny offset) give a mesh of no triangles. */
 MOA_API moa_status moa_run(moa_ctx *ctx);
 
 /* Reads the mesh of the last successful moa_run. The arrays are owned by ctx and stay valid
