@@ -136,6 +136,7 @@ class LoopFiller {
   uint32_t face_along(const std::vector<uint32_t> &loop) const;
   double widest_waist(const std::vector<uint32_t> &loop) const;
   bool bends(const std::vector<uint32_t> &loop) const;
+  bool open_rim(const std::vector<uint32_t> &loop) const;
   bool in_one_cut(const std::vector<uint32_t> &loop, double spacing) const;
   void classify_and_pool();
   std::unordered_map<uint32_t, std::size_t> faces_per_component();
