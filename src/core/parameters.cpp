@@ -65,11 +65,11 @@ const ParamRow kRows[] = {
      "wide as the surface, a border. A loop up to 3 times as wide is a hole too when it is "
      "shorter than half the square root of its surface's vertex count and bends across a "
      "crease (a tear in a large surface, not the rim around it, nor a round hole through a "
-     "smooth part of it, nor the flat rim of a tube's open end). Two loops of separate pieces that run side by side along their "
-     "whole length, up to twice as far apart, are zipped shut (the strip between two halves "
-     "of a CT stack grown apart along one gap between slices). In a contour stack a loop "
-     "lying flat in one cut (a face parallel to the slices) is capped in its plane whatever "
-     "its width",
+     "smooth part of it, nor the flat rim of a tube's open end). Two loops of separate pieces "
+     "that run side by side along their whole length, up to twice as far apart, are zipped "
+     "shut (the strip between two halves of a CT stack grown apart along one gap between "
+     "slices). In a contour stack a loop lying flat in one cut (a face parallel to the "
+     "slices) is capped in its plane whatever its width",
      0, 1e9, false, &Params::hole_size},
     {"solid",
      "1 fills every hole whatever its size (the paper's solid models), leaving open only one "
