@@ -73,8 +73,9 @@ extern const char *const kParamsHelp;
 extern const char *const kCheckHelp;
 extern const char *const kRenderHelp;
 
-// Used by `moa reconstruct --render` (defined in render.cpp): the .png check before the run,
-// and the picture after it; returns the milliseconds the picture took.
+// Used by `moa reconstruct --render` (defined in render.cpp): the check of the picture's path
+// before the run (a .png name, writable: check_writable), and the picture after it; returns
+// the milliseconds the picture took.
 void check_png_path(const std::string &path);
 double render_result(const std::string &image_path, const io::MeshData &mesh);
 

@@ -239,10 +239,7 @@ int run_reconstruct(int argc, char **argv) {
   }
   check_writable(o.output);
   if (!o.stats.empty()) check_writable(o.stats);
-  if (!o.render.empty()) {
-    check_png_path(o.render);
-    check_writable(o.render);
-  }
+  if (!o.render.empty()) check_png_path(o.render);
   moa_ctx *raw = nullptr;
   if (moa_ctx_create(&raw) != MOA_OK)
     throw CliError(kExitInternal, "cannot create a context: " + library_error(nullptr));

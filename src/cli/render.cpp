@@ -112,6 +112,7 @@ void write(const std::string &path, const render::Image &image) {
 void check_png_path(const std::string &path) {
   if (!render::has_png_extension(path))
     throw CliError(kExitOutput, path + ": pictures are written as PNG (use a .png name)");
+  check_writable(path);
 }
 
 double render_result(const std::string &image_path, const io::MeshData &mesh) {
@@ -129,7 +130,6 @@ int run_render(int argc, char **argv) {
     return kExitOk;
   }
   check_png_path(o.image);
-  check_writable(o.image);
   io::MeshData mesh;
   try {
     mesh = io::read_mesh(o.mesh);
