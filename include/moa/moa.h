@@ -114,7 +114,8 @@ typedef struct moa_stats {
                                  summed over the worker threads */
   double stage_ms[MOA_STAGE_COUNT]; /* wall time per stage */
   double total_ms;            /* wall time of moa_run */
-  unsigned threads;           /* worker threads used */
+  unsigned threads;           /* threads the run used (the parameter "threads", at most the
+                                 cores TBB may run on) */
   size_t boundary_edges_before; /* boundary edges after Algorithm 1, before the loop module */
   size_t smoothing_passes;    /* passes of the noisy-cloud smoothing; 0: the cloud did not look
                                  noisy (or the parameter smoothing is 0) */

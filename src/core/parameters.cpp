@@ -18,8 +18,9 @@ struct ParamRow {
 // member initialisers of Params.
 const ParamRow kRows[] = {
     {"threads",
-     "worker threads for the parallel stages; 0 uses every core. The mesh does not "
-     "depend on it",
+     "worker threads for the parallel stages; 0 uses every core, and so does a number "
+     "above that (or above the limit of a tbb::global_control the host application holds). "
+     "The mesh does not depend on it",
      0, 1024, true, &Params::threads},
     {"neighbors",
      "k of the k-nearest-neighbour graph that supplies the candidate points; in a cloud "

@@ -2,7 +2,6 @@
 #include "core/reconstruct.hpp"
 
 #include <tbb/global_control.h>
-#include <tbb/info.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
@@ -184,8 +183,13 @@ Result run_stages(double *xyz, std::size_t count, const Params &params,
 Result reconstruct(double *xyz, std::size_t count, const Params &params,
                    const ProgressFn &progress) {
   if (count > 0 && !xyz) throw Error(MOA_ERROR_INVALID_ARGUMENT, "points are NULL");
+  // No more threads than TBB may run at once: the cores this process may use, or fewer when
+  // the host application holds a tbb::global_control. More would not run (TBB keeps to that
+  // limit) and TBB would print a warning on the caller's stderr.
+  const int allowed = int(
+      tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
   int threads = int(params.threads);
-  if (threads <= 0) threads = tbb::info::default_concurrency();
+  if (threads <= 0 || threads > allowed) threads = std::max(1, allowed);
   // An arena per run: two contexts with different thread counts can run at once.
   tbb::task_arena arena(threads);
   Result result;

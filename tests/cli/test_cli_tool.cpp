@@ -1,8 +1,10 @@
 // The `moa` executable, run as a separate process: its commands, its files and its exit codes
 // with their one-line messages. Arguments: the tool's path and a scratch folder.
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -197,6 +199,29 @@ void test_outputs_checked_first(void **) {
   expect_error(moa("reconstruct " + quote(bad) + " -o " + quote(out)), 3, {"bad_input.xyz"});
 }
 
+// More threads than the machine has: the run uses the cores there are, says so in the
+// statistics and makes the same mesh, with nothing on stderr (TBB warned there when asked for
+// more workers than it may run). A process of its own, as TBB warns once per process.
+void test_more_threads_than_cores(void **) {
+  const std::string input = write_sphere_points(path("threads.xyz"));
+  const std::string one = path("threads_1.ply"), many = path("threads_many.ply"),
+                    stats = path("threads_many.json");
+  Run r = moa("reconstruct -q " + quote(input) + " -o " + quote(one) + " --param threads=1");
+  assert_int_equal(r.code, 0);
+  r = moa("reconstruct -q " + quote(input) + " -o " + quote(many) + " --stats " + quote(stats) +
+          " --param threads=1024");
+  assert_int_equal(r.code, 0);
+  if (!r.err.empty()) fail_msg("expected nothing on stderr, got: %s", r.err.c_str());
+  assert_true(read_file(one) == read_file(many));
+  const std::string json = read_file(stats);
+  const std::size_t at = json.find("\"threads\": ");  // the first: the run's, then params'
+  assert_true(at != std::string::npos);
+  const long used = std::strtol(json.c_str() + at + 11, nullptr, 10);
+  const long cores = ::sysconf(_SC_NPROCESSORS_ONLN);
+  if (used < 1 || used > cores) fail_msg("threads used: %ld on %ld cores", used, cores);
+  EXPECT_HAS(json, "\"threads\": 1024");  // the parameter as set
+}
+
 }  // namespace
 
 int main(int argc, char **argv) {
@@ -210,6 +235,7 @@ int main(int argc, char **argv) {
       cmocka_unit_test(test_check_known_meshes),
       cmocka_unit_test(test_errors),
       cmocka_unit_test(test_outputs_checked_first),
+      cmocka_unit_test(test_more_threads_than_cores),
   };
   return cmocka_run_group_tests(tests, setup, nullptr);
 }

@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <thread>
+
+#include <tbb/global_control.h>
 
 #include "robust/robust.hpp"
 
@@ -266,7 +269,6 @@ void parameter_extremes(void **) {
       moa_param_info info;
       assert_int_equal(moa_param_info_get(i, &info), MOA_OK);
       const double value = end == 0 ? info.min_value : info.max_value;
-      if (std::string(info.name) == "threads" && end == 1) continue;  // 1024 threads: slow
       moa_ctx *one = robust::new_ctx();
       assert_int_equal(moa_set_param(one, info.name, value), MOA_OK);
       assert_int_equal(moa_set_param(all, info.name, value), MOA_OK);
@@ -284,6 +286,38 @@ void parameter_extremes(void **) {
   moa_ctx_destroy(ctx);
 }
 
+unsigned threads_used(const moa_ctx *ctx) {
+  moa_stats st;
+  assert_int_equal(moa_get_stats(ctx, &st, sizeof st), MOA_OK);
+  return st.threads;
+}
+
+// A host that limits TBB (a game engine holding a tbb::global_control) keeps its limit: a run
+// uses that many threads, whatever "threads" asks (every core, two, or more than there are),
+// and makes the same mesh as on one thread. Without a limit, no more than the cores.
+void host_limits_threads(void **) {
+  const Points p = holed_sphere();
+  moa_ctx *ctx = robust::new_ctx();
+  assert_int_equal(moa_set_param(ctx, "threads", 1), MOA_OK);
+  EXPECT_RUN_OK(ctx, p);
+  const std::vector<std::uint32_t> reference = triangles_of(ctx);
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+    for (double threads : {0.0, 2.0, 1024.0}) {
+      assert_int_equal(moa_set_param(ctx, "threads", threads), MOA_OK);
+      assert_int_equal(moa_run(ctx), MOA_OK);
+      assert_int_equal(threads_used(ctx), 1);
+      assert_true(triangles_of(ctx) == reference);
+    }
+  }
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  assert_int_equal(moa_set_param(ctx, "threads", 1024), MOA_OK);
+  assert_int_equal(moa_run(ctx), MOA_OK);
+  assert_in_range(threads_used(ctx), 1, cores);
+  assert_true(triangles_of(ctx) == reference);
+  moa_ctx_destroy(ctx);
+}
+
 }  // namespace
 
 int main() {
@@ -295,6 +329,7 @@ int main() {
       cmocka_unit_test(nested_contexts),
       cmocka_unit_test(repeated_runs),
       cmocka_unit_test(parameter_extremes),
+      cmocka_unit_test(host_limits_threads),
   };
   return cmocka_run_group_tests(tests, nullptr, nullptr);
 }
