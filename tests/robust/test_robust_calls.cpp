@@ -1,9 +1,9 @@
 // Calls in awkward orders and places: cancellation at every progress report, a callback that
-// calls back in, one context's run inside another's callback, repeated runs, and every
-// parameter at the ends of its range. Complements tests/abi, which checks each call on its own.
+// calls back in, one context's run inside another's callback, repeated runs, every parameter
+// at the ends of its range, and a host that limits TBB's threads. Complements tests/abi, which
+// checks each call on its own.
 #include <algorithm>
 #include <cmath>
-#include <string>
 #include <thread>
 
 #include <tbb/global_control.h>
