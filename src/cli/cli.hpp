@@ -19,7 +19,7 @@ enum ExitCode : int {
   kExitUsage = 2,        // the command line: unknown command/option/parameter, missing argument
   kExitInput = 3,        // the input file: missing, unreadable, malformed, unusable points
   kExitReconstruct = 4,  // moa_run failed or was interrupted
-  kExitOutput = 5,       // the output mesh or statistics file cannot be written
+  kExitOutput = 5,       // an output file, or standard output, cannot be written
 };
 
 // Ends the command: main prints "moa: <what>" on one line of stderr and exits with code().

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <iostream>
 #include <new>
 #include <string>
 
@@ -49,8 +50,8 @@ const char *const kHelp =
     "  3  input file error: missing, unreadable or malformed, or points that cannot be\n"
     "     reconstructed (too few, non-finite, all collinear)\n"
     "  4  reconstruction error (including an interrupted run)\n"
-    "  5  output file error: the mesh, the statistics, the picture or the report cannot be\n"
-    "     written\n"
+    "  5  output file error: the mesh, the statistics, the picture, the report or\n"
+    "     standard output cannot be written\n"
     "Errors are reported on one line of stderr: \"moa: FILE: what is wrong\".\n";
 
 // One line, whatever the message holds.
@@ -157,10 +158,29 @@ void check_writable(const std::string &path) {
 
 }  // namespace moa::cli
 
+namespace {
+
+// What a command printed must have reached standard output: behind a redirection to a full
+// disk, `moa check --json > report.json` lost its report and still exited 0. A command that
+// failed already has its own message and code.
+int with_stdout_written(int code) {
+  using namespace moa::cli;
+  errno = 0;
+  std::cout.flush();  // through stdout's buffer (synced with stdio), where a failure shows
+  const bool flushed = std::fflush(stdout) == 0;
+  const int error = errno;
+  if (code != kExitOk || (flushed && std::cout.good() && !std::ferror(stdout))) return code;
+  std::fprintf(stderr, "moa: standard output: cannot write%s%s\n", error ? ": " : "",
+               error ? std::strerror(error) : "");
+  return kExitOutput;
+}
+
+}  // namespace
+
 int main(int argc, char **argv) {
   using namespace moa::cli;
   try {
-    return run(argc, argv);
+    return with_stdout_written(run(argc, argv));
   } catch (const CliError &e) {
     std::fprintf(stderr, "moa: %s\n", one_line(e.what()).c_str());
     return e.code();

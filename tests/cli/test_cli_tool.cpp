@@ -199,6 +199,39 @@ void test_outputs_checked_first(void **) {
   expect_error(moa("reconstruct " + quote(bad) + " -o " + quote(out)), 3, {"bad_input.xyz"});
 }
 
+// `moa ARGS` with its standard output sent to `target` (a device, not the scratch file).
+Run moa_with_stdout(const std::string &args, const std::string &target) {
+  const std::string err = path("stderr.txt");
+  const std::string command =
+      quote(g_moa.exe) + " " + args + " >" + quote(target) + " 2>" + quote(err);
+  const int status = std::system(command.c_str());
+  Run r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.err = read_file(err);
+  return r;
+}
+
+// Output to standard output that cannot be written (a full disk: /dev/full) is an output error,
+// not a success with the report lost; a command that writes nothing there is not affected.
+void test_stdout_cannot_be_written(void **) {
+  const std::string input = write_sphere_points(path("stdout.xyz")), mesh = path("stdout.ply");
+  for (const std::string &args :
+       {std::string("params"), std::string("--help"), std::string("--version"),
+        "reconstruct " + quote(input) + " -o " + quote(mesh), "check --json " + quote(mesh)})
+    expect_error(moa_with_stdout(args, "/dev/full"), 5, {"standard output: cannot write"});
+  // With the reason when the final flush is the write that fails (a report written out
+  // earlier fails there, and by the end its reason is gone). One short line: held to the end.
+  expect_error(moa_with_stdout("--version", "/dev/full"), 5,
+               {"standard output: cannot write: No space left on device"});
+  const Run quiet = moa_with_stdout("reconstruct -q " + quote(input) + " -o " + quote(mesh),
+                                    "/dev/full");
+  assert_int_equal(quiet.code, 0);
+  assert_true(quiet.err.empty());
+  // The command's own error comes first, and alone.
+  expect_error(moa_with_stdout("check " + quote(path("missing.ply")), "/dev/full"), 3,
+               {"missing.ply"});
+}
+
 // More threads than the machine has: the run uses the cores there are, says so in the
 // statistics and makes the same mesh, with nothing on stderr (TBB warned there when asked for
 // more workers than it may run). A process of its own, as TBB warns once per process.
@@ -235,6 +268,7 @@ int main(int argc, char **argv) {
       cmocka_unit_test(test_check_known_meshes),
       cmocka_unit_test(test_errors),
       cmocka_unit_test(test_outputs_checked_first),
+      cmocka_unit_test(test_stdout_cannot_be_written),
       cmocka_unit_test(test_more_threads_than_cores),
   };
   return cmocka_run_group_tests(tests, setup, nullptr);
