@@ -1,7 +1,8 @@
 // moa_bench: times libmoa on one point file through the public C ABI, the way a program would
 // use it, and checks what it returns.
 //
-//   moa_bench INPUT [--threads N] [--runs N] [--param NAME=VALUE]... [--mesh OUT] [--result FILE]
+//   moa_bench INPUT [--threads N] [--cores N] [--runs N] [--param NAME=VALUE]... [--mesh OUT]
+//             [--result FILE]
 //   moa_bench analyze MESH [--points INPUT] [--reference REF] [--result FILE]
 //   moa_bench sample --out DIR [--meshes DIR]           (sample_inputs.cpp)
 //   moa_bench report --work DIR --out FILE.md [...]     (report.cpp)
@@ -15,9 +16,12 @@
 #include <exception>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include <tbb/global_control.h>
 
 #include "bench_common.hpp"
 #include "bench_modes.hpp"
@@ -31,10 +35,12 @@ namespace {
 
 const char *const kUsage =
     "Usage:\n"
-    "  moa_bench INPUT [--threads N] [--runs N] [--param NAME=VALUE]... [--mesh OUT]\n"
-    "                  [--result FILE]\n"
+    "  moa_bench INPUT [--threads N] [--cores N] [--runs N] [--param NAME=VALUE]...\n"
+    "                  [--mesh OUT] [--result FILE]\n"
     "      run libmoa on the points of INPUT (default threads 0 = all cores, runs 2: the\n"
-    "      second run must give the same triangles, C6); --mesh writes the mesh for analyze\n"
+    "      second run must give the same triangles, C6); --mesh writes the mesh for analyze;\n"
+    "      --cores N lets TBB run N threads, as on a machine with N cores (for the memory of\n"
+    "      N threads on a smaller machine; the times are then those of oversubscribed cores)\n"
     "  moa_bench analyze MESH [--points INPUT] [--reference REF] [--result FILE]\n"
     "      analyse any method's mesh: moa_quality, input points on the mesh, distance to REF\n"
     "  moa_bench sample --out DIR [--meshes DIR]\n"
@@ -73,6 +79,7 @@ void put_quality(ResultWriter &r, const MeshReport &q) {
 struct RunOptions {
   std::string input, mesh, result;
   double threads = 0;
+  int cores = 0;  // 0: the machine's own
   int runs = 2;
   std::vector<std::pair<std::string, double>> params;
 };
@@ -97,6 +104,9 @@ RunOptions parse_run(int argc, char **argv) {
     const std::string a = argv[i];
     if (a == "--threads") {
       o.threads = number(a, option_value(argc, argv, i));
+    } else if (a == "--cores") {
+      o.cores = int(number(a, option_value(argc, argv, i)));
+      if (o.cores < 1) throw UsageError("--cores must be at least 1");
     } else if (a == "--runs") {
       o.runs = int(number(a, option_value(argc, argv, i)));
       if (o.runs < 1) throw UsageError("--runs must be at least 1");
@@ -139,6 +149,9 @@ std::vector<uint32_t> copy_triangles(const moa_ctx *ctx) {
 
 int run_main(int argc, char **argv) {
   const RunOptions o = parse_run(argc, argv);
+  // libmoa runs no more threads than TBB may (reconstruct.cpp); a host's global_control sets that.
+  std::optional<tbb::global_control> cores;
+  if (o.cores > 0) cores.emplace(tbb::global_control::max_allowed_parallelism, o.cores);
   ResultWriter r;
   r.put("method", "libmoa").put("input", o.input).put("moa_version", moa_version());
   const uint64_t rss_start = peak_rss_bytes();
