@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include "core/intersection.hpp"
@@ -19,16 +20,18 @@ namespace moa {
 constexpr std::size_t kPollEvery = 256;
 
 struct GrowthState {
-  // `typical_spacing` is the cloud's median point spacing (median_spacing).
+  // `typical_spacing` is the cloud's median point spacing (median_spacing); `embree_points`,
+  // the single-precision points of another state's crossing index over the same cloud, to
+  // share (a part of Algorithm 1's parallel pass gets the whole cloud's).
   GrowthState(const PointSet &p, const Neighborhood &n, const Params &par, double typical_spacing,
-              moa_stats &st)
+              moa_stats &st, std::shared_ptr<const EmbreePoints> embree_points = nullptr)
       : points(p),
         nb(n),
         params(par),
         spacing(typical_spacing),
         mesh(p.size()),
         // The crossing index's grid of recent faces has cells two median spacings wide.
-        crossings(p, 2.0 * typical_spacing),
+        crossings(p, 2.0 * typical_spacing, std::move(embree_points)),
         judge(p, n, par, mesh, crossings),
         search(p, n, par),
         stats(st) {}

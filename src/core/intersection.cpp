@@ -89,31 +89,40 @@ RTCDevice shared_device() {
 
 }  // namespace
 
-CrossingIndex::CrossingIndex(const PointSet &points, double cell_size)
+CrossingIndex::CrossingIndex(const PointSet &points, double cell_size,
+                             std::shared_ptr<const EmbreePoints> shared)
     : points_(points), cell_(cell_size), pad_(std::min(kPad, 0.05 * cell_size)) {
-  const std::vector<Vec3> &placed = points.placed();
-  // Embree's frame: the median of up to 1,024 points spread through the (Morton-ordered)
-  // cloud, one grid cell to the unit.
-  const std::size_t n = points.size(), step = std::max<std::size_t>(1, n / 1024);
-  std::vector<double> xs, ys, zs;
-  for (std::size_t i = 0; i < n; i += step) {
-    xs.push_back(placed[i].x);
-    ys.push_back(placed[i].y);
-    zs.push_back(placed[i].z);
+  if (shared && shared->unit == 1.0 / cell_size && shared->xyz.size() == points.size() * 3 + 4) {
+    embree_ = std::move(shared);
+  } else {
+    auto own = std::make_shared<EmbreePoints>();
+    const std::vector<Vec3> &placed = points.placed();
+    // Embree's frame: the median of up to 1,024 points spread through the (Morton-ordered)
+    // cloud, one grid cell to the unit.
+    const std::size_t n = points.size(), step = std::max<std::size_t>(1, n / 1024);
+    std::vector<double> xs, ys, zs;
+    for (std::size_t i = 0; i < n; i += step) {
+      xs.push_back(placed[i].x);
+      ys.push_back(placed[i].y);
+      zs.push_back(placed[i].z);
+    }
+    auto median = [](std::vector<double> &v) {
+      std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
+      return v[v.size() / 2];
+    };
+    own->origin = {median(xs), median(ys), median(zs)};
+    own->unit = 1.0 / cell_size;
+    own->xyz.resize(n * 3 + 4);  // Embree reads 16 bytes at the last vertex
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec3 p = (placed[i] - own->origin) * own->unit;
+      own->xyz[3 * i] = float(p.x);
+      own->xyz[3 * i + 1] = float(p.y);
+      own->xyz[3 * i + 2] = float(p.z);
+    }
+    embree_ = std::move(own);
   }
-  auto median = [](std::vector<double> &v) {
-    std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
-    return v[v.size() / 2];
-  };
-  origin_ = {median(xs), median(ys), median(zs)};
-  unit_ = 1.0 / cell_size;
-  vertices_.resize(n * 3 + 4);  // Embree reads 16 bytes at the last vertex
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec3 p = in_frame(placed[i]);
-    vertices_[3 * i] = float(p.x);
-    vertices_[3 * i + 1] = float(p.y);
-    vertices_[3 * i + 2] = float(p.z);
-  }
+  origin_ = embree_->origin;
+  unit_ = embree_->unit;
   device_ = shared_device();
 }
 
@@ -121,7 +130,7 @@ CrossingIndex::~CrossingIndex() { release(); }
 
 void CrossingIndex::release() {
   set_aside();
-  std::vector<float>().swap(vertices_);
+  embree_.reset();
   tested_.release();
   std::vector<uint32_t>().swap(found_);
 }
@@ -178,7 +187,8 @@ void CrossingIndex::rebuild(MeshState &mesh) {
                                     RTC_SCENE_FLAG_COMPACT);
   rtcSetSceneBuildQuality(scene.get(), RTC_BUILD_QUALITY_MEDIUM);
   rtcSetSharedGeometryBuffer(geom.get(), RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                             vertices_.data(), 0, 3 * sizeof(float), points_.size());
+                             const_cast<float *>(embree_->xyz.data()), 0, 3 * sizeof(float),
+                             points_.size());  // read only
   // Embree reads the mesh's own face records rather than a copy (removed faces included: every
   // query skips them), so the index costs no memory; GrowthState::add_face rebuilds it when they
   // move. Past kMaxDeadShare removed faces, the scene holds a copy of the live ones instead.
@@ -388,15 +398,6 @@ void CrossingIndex::faces_in_box(const Vec3 &lo, const Vec3 &hi, MeshState &mesh
     if (boxes_meet(flo, fhi, lo, hi)) out.push_back(f);
     return false;
   });
-}
-
-std::size_t CrossingIndex::memory_bytes() const {
-  std::size_t bytes = vertices_.capacity() * sizeof(float) + tested_.memory_bytes() +
-                      (scene_corners_.capacity() + scene_faces_.capacity()) * sizeof(uint32_t);
-  // Embree's BVH: about 36 bytes per committed triangle at medium quality, compact.
-  bytes += std::size_t(committed_) * 36;
-  bytes += grid_.memory_bytes() + oversized_.capacity() * sizeof(uint32_t);
-  return bytes;
 }
 
 }  // namespace moa

@@ -221,8 +221,10 @@ class Builder {
 
 // Parts of the parallel first pass: about kParts of them, each of kMinPartPoints to
 // kMaxPartPoints points. Many parts balance the threads' loads; few parts leave less seam for
-// the sequential pass over the whole cloud and cost less to set up (every part's state takes a
-// few tens of bytes per point of the whole cloud).
+// the sequential pass over the whole cloud and cost less to set up (every part's state is
+// indexed like the whole cloud: at a million points about 7 MB for each part running at once,
+// as its per-vertex records take only the pages its points fall in and its crossing index
+// reads the whole cloud's single-precision points).
 // Fixed by the number of points alone: the mesh must not depend on the number of threads.
 constexpr std::size_t kParts = 16;
 constexpr std::size_t kMinPartPoints = 8192;
@@ -240,6 +242,8 @@ void grow_parts(GrowthState &g, const Partition &parts, const std::function<void
   std::vector<std::size_t> rebuilds(count, 0);
   std::vector<double> crossing_ms(count, 0.0);
   std::atomic<std::size_t> made{0};
+  // Read by every part's crossing index at once (only read).
+  const std::shared_ptr<const EmbreePoints> embree_points = g.crossings.embree_points();
   // No exception leaves a part's task: the first one is kept and rethrown once every task has
   // ended. An exception escaping into TBB would cancel the other parts' tasks together with the
   // Embree builds nested in them, and Embree does not survive a build cancelled half way.
@@ -261,7 +265,7 @@ void grow_parts(GrowthState &g, const Partition &parts, const std::function<void
     const EndOfTask end_of_task{ended};
     if (stop.load()) return;
     try {
-      GrowthState local(g.points, g.nb, g.params, g.spacing, stats[p]);
+      GrowthState local(g.points, g.nb, g.params, g.spacing, stats[p], embree_points);
       const Region region{parts, uint16_t(p)};
       Builder builder(local, &region);
       auto part_tick = [&](double) {

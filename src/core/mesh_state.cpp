@@ -50,6 +50,7 @@ int MeshState::edge_faces(uint32_t u, uint32_t v, uint32_t out[2]) const {
   // Both lists are in the order the faces were added: walk the shorter one.
   if (around_[v].count < around_[u].count) std::swap(u, v);
   out[0] = out[1] = kNone;
+  if (around_[u].count == 0) return 0;  // (its `first` means nothing then)
   int n = 0;
   for (uint32_t f = around_[u].first; f != kNone && n < 2;) {
     const FaceRecord &r = faces_[f];
@@ -245,11 +246,6 @@ void MeshState::reverse_faces(const std::vector<uint32_t> &faces) {
     parent_[f] = roots[f];
     flip_[f] = 0;
   }
-}
-
-std::size_t MeshState::memory_bytes() const {
-  return faces_.capacity() * sizeof(FaceRecord) + alive_.capacity() + parent_.capacity() * 4 +
-         flip_.capacity() + around_.capacity() * sizeof(VertexFaces);
 }
 
 }  // namespace moa

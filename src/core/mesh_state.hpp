@@ -10,6 +10,8 @@
 #include <iterator>
 #include <vector>
 
+#include "core/zeroed_array.hpp"
+
 namespace moa {
 
 using Tri = std::array<uint32_t, 3>;
@@ -167,7 +169,6 @@ class MeshState {
   // as they are), and makes every face's stored order its current orientation.
   void reverse_faces(const std::vector<uint32_t> &faces);
 
-  std::size_t memory_bytes() const;
   // When set, a vertex that has faces accepts only faces that share an edge with its fan.
   void set_strict_fans(bool on) { strict_fans_ = on; }
 
@@ -178,10 +179,11 @@ class MeshState {
   int mismatch(const Tri &t, uint32_t g) const;
 
   // Per vertex: the ends of its list of faces, their number, and the number of edges at the
-  // vertex that have at least one face (a closed fan has as many edges as faces). Once the
-  // list is empty, `last` keeps the face removed last (FacesAround::front).
+  // vertex that have at least one face (a closed fan has as many edges as faces). The ends
+  // mean something only while the list has faces (all zero bytes is an unused vertex), but
+  // once it is empty again, `last` keeps the face removed last (FacesAround::front).
   struct VertexFaces {
-    uint32_t first = kNone, last = kNone, count = 0, edges = 0;
+    uint32_t first, last, count, edges;
   };
   void link(uint32_t f, uint32_t v);
   void unlink(uint32_t f, uint32_t v);
@@ -191,7 +193,7 @@ class MeshState {
   std::size_t removed_ = 0;
   std::vector<uint32_t> parent_;
   std::vector<uint8_t> flip_;  // parity to parent
-  std::vector<VertexFaces> around_;
+  ZeroedArray<VertexFaces> around_;  // per vertex of the whole cloud; a part writes a tenth
   bool strict_fans_ = false;
 };
 

@@ -89,12 +89,35 @@ void crossings_found_through_embree(void **) {
   assert_true(near.size() <= 40);
 }
 
+// A second index over the same points and cell size (a part of Algorithm 1's parallel pass)
+// reads the first one's single-precision points rather than a copy of its own, and finds the
+// same crossings; one over another cell size, whose frame differs, makes its own.
+void second_index_shares_the_points(void **) {
+  SqueezedGrid g;
+  moa::MeshState mesh_a(g.points.size()), mesh_b(g.points.size());
+  moa::CrossingIndex a(g.points, 2 * g.spacing());
+  moa::CrossingIndex b(g.points, 2 * g.spacing(), a.embree_points());
+  moa::CrossingIndex c(g.points, 3 * g.spacing(), a.embree_points());
+  assert_ptr_equal(b.embree_points().get(), a.embree_points().get());
+  assert_ptr_not_equal(c.embree_points().get(), a.embree_points().get());
+  assert_int_equal(c.embree_points()->xyz.size(), a.embree_points()->xyz.size());
+  triangulate(g, mesh_a, a);
+  triangulate(g, mesh_b, b);
+  a.release();  // b keeps the points alive
+  std::vector<uint32_t> near;
+  const double pad = 0.5 * g.spacing();
+  assert_true(b.crosses({g.extra(0), g.extra(1), g.extra(2)}, pad, mesh_b, near));
+  near.clear();
+  assert_false(b.crosses({g.extra(0), g.extra(2), g.extra(3)}, pad, mesh_b, near));
+}
+
 }  // namespace
 
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(boxes_stay_local),
       cmocka_unit_test(crossings_found_through_embree),
+      cmocka_unit_test(second_index_shares_the_points),
   };
   return cmocka_run_group_tests(tests, nullptr, nullptr);
 }
