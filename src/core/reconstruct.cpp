@@ -113,6 +113,9 @@ std::optional<Result> run_stages_once(double *xyz, std::size_t count, const Para
     mark_isolated_points(points, nb);
     st.stage_ms[MOA_STAGE_NEIGHBORS] = ms_since(t);
 
+    // The search tree's memory goes back to the system before the mesh's per-vertex records
+    // take fresh pages of their own (ZeroedArray), or both stay resident.
+    return_free_memory();
     GrowthState g(points, nb, params, median_spacing(nb), st);
 
     t = Clock::now();
