@@ -105,8 +105,9 @@ RunOptions parse_run(int argc, char **argv) {
     if (a == "--threads") {
       o.threads = number(a, option_value(argc, argv, i));
     } else if (a == "--cores") {
-      o.cores = int(number(a, option_value(argc, argv, i)));
-      if (o.cores < 1) throw UsageError("--cores must be at least 1");
+      const double cores = number(a, option_value(argc, argv, i));
+      if (!(cores >= 1 && cores <= 4096)) throw UsageError("--cores must be from 1 to 4096");
+      o.cores = int(cores);
     } else if (a == "--runs") {
       o.runs = int(number(a, option_value(argc, argv, i)));
       if (o.runs < 1) throw UsageError("--runs must be at least 1");
