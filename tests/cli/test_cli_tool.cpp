@@ -199,18 +199,6 @@ void test_outputs_checked_first(void **) {
   expect_error(moa("reconstruct " + quote(bad) + " -o " + quote(out)), 3, {"bad_input.xyz"});
 }
 
-// `moa ARGS` with its standard output sent to `target` (a device, not the scratch file).
-Run moa_with_stdout(const std::string &args, const std::string &target) {
-  const std::string err = path("stderr.txt");
-  const std::string command =
-      quote(g_moa.exe) + " " + args + " >" + quote(target) + " 2>" + quote(err);
-  const int status = std::system(command.c_str());
-  Run r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.err = read_file(err);
-  return r;
-}
-
 // Output to standard output that cannot be written (a full disk: /dev/full) is an output error,
 // not a success with the report lost; a command that writes nothing there is not affected.
 void test_stdout_cannot_be_written(void **) {
@@ -218,17 +206,17 @@ void test_stdout_cannot_be_written(void **) {
   for (const std::string &args :
        {std::string("params"), std::string("--help"), std::string("--version"),
         "reconstruct " + quote(input) + " -o " + quote(mesh), "check --json " + quote(mesh)})
-    expect_error(moa_with_stdout(args, "/dev/full"), 5, {"standard output: cannot write"});
+    expect_error(g_moa.run(args, "/dev/full"), 5, {"standard output: cannot write"});
   // With the reason when the final flush is the write that fails (a report written out
   // earlier fails there, and by the end its reason is gone). One short line: held to the end.
-  expect_error(moa_with_stdout("--version", "/dev/full"), 5,
+  expect_error(g_moa.run("--version", "/dev/full"), 5,
                {"standard output: cannot write: No space left on device"});
-  const Run quiet = moa_with_stdout("reconstruct -q " + quote(input) + " -o " + quote(mesh),
+  const Run quiet = g_moa.run("reconstruct -q " + quote(input) + " -o " + quote(mesh),
                                     "/dev/full");
   assert_int_equal(quiet.code, 0);
   assert_true(quiet.err.empty());
   // The command's own error comes first, and alone.
-  expect_error(moa_with_stdout("check " + quote(path("missing.ply")), "/dev/full"), 3,
+  expect_error(g_moa.run("check " + quote(path("missing.ply")), "/dev/full"), 3,
                {"missing.ply"});
 }
 

@@ -73,14 +73,16 @@ struct Tool {
   std::string path(const std::string &name) const { return dir + "/" + name; }
 
   // Runs `TOOL ARGS` with stdout and stderr captured in files of the scratch folder (stderr is
-  // then no terminal: no progress bar).
-  Run run(const std::string &args) const {
-    const std::string out = path("stdout.txt"), err = path("stderr.txt");
+  // then no terminal: no progress bar). Stdout goes to `stdout_to` instead when given (a
+  // device such as /dev/full); out is then left empty.
+  Run run(const std::string &args, const std::string &stdout_to = "") const {
+    const std::string out = stdout_to.empty() ? path("stdout.txt") : stdout_to;
+    const std::string err = path("stderr.txt");
     const std::string command = quote(exe) + " " + args + " >" + quote(out) + " 2>" + quote(err);
     const int status = std::system(command.c_str());
     Run r;
     r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = read_file(out);
+    if (stdout_to.empty()) r.out = read_file(out);
     r.err = read_file(err);
     return r;
   }
