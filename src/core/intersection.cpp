@@ -113,16 +113,14 @@ CrossingIndex::CrossingIndex(const PointSet &points, double cell_size,
     own->origin = {median(xs), median(ys), median(zs)};
     own->unit = 1.0 / cell_size;
     own->xyz.resize(n * 3 + 4);  // Embree reads 16 bytes at the last vertex
+    embree_ = own;  // the frame, for in_frame
     for (std::size_t i = 0; i < n; ++i) {
-      const Vec3 p = (placed[i] - own->origin) * own->unit;
+      const Vec3 p = in_frame(placed[i]);
       own->xyz[3 * i] = float(p.x);
       own->xyz[3 * i + 1] = float(p.y);
       own->xyz[3 * i + 2] = float(p.z);
     }
-    embree_ = std::move(own);
   }
-  origin_ = embree_->origin;
-  unit_ = embree_->unit;
   device_ = shared_device();
 }
 
@@ -280,7 +278,7 @@ bool CrossingIndex::visit_near(const Vec3 &lo, const Vec3 &hi, MeshState &mesh, 
   if (scene_ && committed_ > 0) {
     found_.clear();
     const Vec3 c = in_frame(midpoint(lo, hi));
-    double radius = (norm(hi - lo) * 0.5 + pad_) * unit_;
+    double radius = (norm(hi - lo) * 0.5 + pad_) * embree_->unit;
     radius += kFloatSlack * (std::max({std::fabs(c.x), std::fabs(c.y), std::fabs(c.z)}) + radius);
     RTCPointQuery pq;
     pq.x = float(c.x);
@@ -343,7 +341,7 @@ bool CrossingIndex::crosses(const Tri &t, double pad, MeshState &mesh,
       const Vec3 &p = points_.placed()[t[e]], &q = points_.placed()[t[(e + 1) % 3]];
       RTCRayHit rh{};
       // The segment, lengthened slightly at both ends so float rounding cannot shorten it.
-      const Vec3 d = (q - p) * unit_, o = in_frame(p) - d * 1e-4;
+      const Vec3 d = (q - p) * embree_->unit, o = in_frame(p) - d * 1e-4;
       rh.ray.org_x = float(o.x);
       rh.ray.org_y = float(o.y);
       rh.ray.org_z = float(o.z);

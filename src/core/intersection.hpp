@@ -85,11 +85,9 @@ class CrossingIndex {
   bool visit_near(const Vec3 &lo, const Vec3 &hi, MeshState &mesh, Visit &&visit);
 
   // A point in Embree's frame (see kFloatSlack in intersection.cpp).
-  Vec3 in_frame(const Vec3 &p) const { return (p - origin_) * unit_; }
+  Vec3 in_frame(const Vec3 &p) const { return (p - embree_->origin) * embree_->unit; }
 
   const PointSet &points_;
-  Vec3 origin_{};
-  double unit_ = 1;
   std::shared_ptr<const EmbreePoints> embree_;  // Embree's shared vertex buffer
   void *device_ = nullptr;
   void *scene_ = nullptr;
