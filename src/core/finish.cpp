@@ -74,11 +74,17 @@ std::size_t enforce_single_fans(std::size_t nv, const std::vector<Tri> &tris,
           if (alive[inc.faces[b + i]] && alive[inc.faces[b + j]] &&
               share_other_vertex(tris[inc.faces[b + i]], tris[inc.faces[b + j]], v))
             fan.join(i, j);
+      // The largest fan of live faces stays (of equal ones, that with the lower root). A face
+      // removed earlier in the pass is no fan: counted as one, it outranked a lone live face
+      // listed after it, whose removal then went on along the faces beyond.
       size.assign(n, 0);
-      for (uint32_t i = 0; i < n; ++i) ++size[root(i)];
-      uint32_t best = 0;
+      uint32_t best = kNone;
       for (uint32_t i = 0; i < n; ++i)
-        if (size[root(i)] > size[best] || (size[root(i)] == size[best] && root(i) < best))
+        if (alive[inc.faces[b + i]]) ++size[root(i)];
+      for (uint32_t i = 0; i < n; ++i)
+        if (alive[inc.faces[b + i]] &&
+            (best == kNone || size[root(i)] > size[best] ||
+             (size[root(i)] == size[best] && root(i) < best)))
           best = root(i);
       for (uint32_t i = 0; i < n; ++i)
         if (root(i) != best && alive[inc.faces[b + i]]) {

@@ -128,6 +128,26 @@ void closed_surfaces_touching_at_a_vertex(void **) {
   assert_int_equal(at_shared, 4);
 }
 
+// Fans resolved one vertex after another: removing the smaller fan at vertex 0 takes away the
+// two faces that joined vertex 5's faces into one fan, so vertex 5 has two fans now, equal in
+// size: the one listed first stays. Vertices 6, 8 and 9 are left with one live face listed
+// after a removed one, and it stays: a removed face counted as a fan of one outranked it, and
+// the removals went on along the strip (3 faces kept, not 5).
+void removal_splits_a_later_fan(void **) {
+  std::vector<Vec3> xyz;
+  for (int i = 0; i < 12; ++i) xyz.push_back({std::cos(i * 0.5), std::sin(i * 0.5), 0.1 * i});
+  std::vector<Tri> faces = {
+      {0, 1, 2}, {0, 2, 3}, {0, 3, 4},  // vertex 0's larger fan
+      {5, 6, 0}, {5, 0, 7},             // its smaller one, the link between 5's two halves
+      {5, 8, 6}, {5, 9, 8},             // one half of vertex 5's faces
+      {5, 7, 10}, {5, 10, 11},          // the other
+  };
+  // Kept: vertex 0's larger fan (rim 0-1-2-3-4-0) and faces 5-8-6, 5-9-8 (rim 5-9-8-6-5).
+  finish_and_count(xyz, faces, 5, 4, 9);
+  assert_true(corner_sets(faces) ==
+              corner_sets({{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {5, 8, 6}, {5, 9, 8}}));
+}
+
 }  // namespace
 
 int main(void) {
@@ -137,6 +157,7 @@ int main(void) {
       cmocka_unit_test(two_open_fans_smaller_removed),
       cmocka_unit_test(stray_triangle_at_closed_fan_removed),
       cmocka_unit_test(closed_surfaces_touching_at_a_vertex),
+      cmocka_unit_test(removal_splits_a_later_fan),
   };
   return cmocka_run_group_tests(tests, nullptr, nullptr);
 }
