@@ -1,6 +1,12 @@
 #include "core/finish.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
+#include <numeric>
+#include <utility>
 
 #include "core/disjoint_sets.hpp"
 
@@ -10,6 +16,7 @@ namespace {
 // Vertex -> incident alive faces, in compressed rows.
 struct Incidence {
   std::vector<uint32_t> start, faces;
+  Incidence() = default;
   Incidence(std::size_t nv, const std::vector<Tri> &tris, const std::vector<char> &alive) {
     start.assign(nv + 1, 0);
     for (std::size_t f = 0; f < tris.size(); ++f)
@@ -55,16 +62,32 @@ bool one_live_fan(uint32_t v, const uint32_t *faces, uint32_t n, const std::vect
 }
 
 // Removes, at every vertex whose faces form several fans, all fans but the largest. Removal
-// can split fans elsewhere, so repeat until nothing changes. Returns faces removed.
+// can split fans elsewhere, so repeat until nothing changes. Returns faces removed, and leaves
+// in `inc` the incidence of the faces kept.
 std::size_t enforce_single_fans(std::size_t nv, const std::vector<Tri> &tris,
-                                std::vector<char> &alive) {
+                                std::vector<char> &alive, Incidence &inc) {
   std::size_t removed = 0;
   DisjointSets fan;  // reused from vertex to vertex, as are size and others
   std::vector<uint32_t> size, others;
+  std::vector<char> to_judge(nv);
   for (bool changed = true; changed;) {
     changed = false;
-    Incidence inc(nv, tris, alive);
+    inc = Incidence(nv, tris, alive);
+    // The vertices in several fans are found in parallel (nearly every vertex has one fan:
+    // telling that is most of the work), then judged one by one in vertex order, each as the
+    // removals at the vertices before it left its faces, as a pass over every vertex in order
+    // would: a vertex that lost a face in this pass is judged at its turn too.
+    tbb::parallel_for(tbb::blocked_range<uint32_t>(0, uint32_t(nv), 4096),
+                      [&](const tbb::blocked_range<uint32_t> &r) {
+                        std::vector<uint32_t> scratch;
+                        for (uint32_t v = r.begin(); v != r.end(); ++v) {
+                          const uint32_t b = inc.start[v], n = inc.start[v + 1] - b;
+                          to_judge[v] = n >= 2 && !one_live_fan(v, &inc.faces[b], n, tris, alive,
+                                                                 scratch);
+                        }
+                      });
     for (uint32_t v = 0; v < nv; ++v) {
+      if (!to_judge[v]) continue;
       uint32_t b = inc.start[v], e = inc.start[v + 1], n = e - b;
       if (n < 2 || one_live_fan(v, &inc.faces[b], n, tris, alive, others)) continue;
       fan.reset(n);
@@ -86,46 +109,68 @@ std::size_t enforce_single_fans(std::size_t nv, const std::vector<Tri> &tris,
             (best == kNone || size[root(i)] > size[best] ||
              (size[root(i)] == size[best] && root(i) < best)))
           best = root(i);
-      for (uint32_t i = 0; i < n; ++i)
-        if (root(i) != best && alive[inc.faces[b + i]]) {
-          alive[inc.faces[b + i]] = 0;
+      for (uint32_t i = 0; i < n; ++i) {
+        const uint32_t f = inc.faces[b + i];
+        if (root(i) != best && alive[f]) {
+          alive[f] = 0;
           ++removed;
           changed = true;
+          for (uint32_t x : tris[f])
+            if (x > v) to_judge[x] = 1;
         }
+      }
     }
   }
   return removed;
 }
 
+// Joins in `comp` the faces on each edge, and returns the number of edges with one face. Each
+// edge is looked at from its lower vertex, whose faces holding its upper one are those on it;
+// in parallel over the vertices, the joins then one thread (the sets they make do not depend
+// on the order).
+std::size_t join_across_edges(const std::vector<Tri> &tris, const Incidence &inc,
+                              DisjointSets &comp) {
+  const uint32_t nv = uint32_t(inc.start.size() - 1);
+  struct Found {
+    std::vector<std::pair<uint32_t, uint32_t>> pairs;  // faces sharing an edge
+    std::size_t boundary = 0;
+  };
+  tbb::enumerable_thread_specific<Found> found;
+  tbb::parallel_for(tbb::blocked_range<uint32_t>(0, nv, 4096),
+                    [&](const tbb::blocked_range<uint32_t> &r) {
+                      Found &out = found.local();
+                      std::vector<std::pair<uint32_t, uint32_t>> ends;  // (upper end, face)
+                      for (uint32_t u = r.begin(); u != r.end(); ++u) {
+                        ends.clear();
+                        for (uint32_t k = inc.start[u]; k < inc.start[u + 1]; ++k)
+                          for (uint32_t w : tris[inc.faces[k]])
+                            if (w > u) ends.push_back({w, inc.faces[k]});
+                        std::sort(ends.begin(), ends.end());
+                        for (std::size_t i = 0, j; i < ends.size(); i = j) {
+                          for (j = i + 1; j < ends.size() && ends[j].first == ends[i].first; ++j)
+                            out.pairs.push_back({ends[j - 1].second, ends[j].second});
+                          out.boundary += j == i + 1;
+                        }
+                      }
+                    });
+  std::size_t boundary = 0;
+  for (Found &f : found) {
+    for (const auto &[a, b] : f.pairs) comp.join(a, b);
+    boundary += f.boundary;
+  }
+  return boundary;
+}
+
 // Turns every component so that its signed volume is positive: closed ones face outward.
-// Returns the number of boundary edges, which the walk joining faces across their edges meets
-// on the way (an edge no other face shares).
+// Returns the number of boundary edges. `inc` is the incidence of the alive faces; it is freed
+// once read.
 std::size_t orient_outward(const PointSet &points, std::vector<Tri> &tris,
-                           const std::vector<char> &alive) {
+                           const std::vector<char> &alive, Incidence &inc) {
   const std::size_t nf = tris.size();
   DisjointSets comp(nf);
   auto root = [&](uint32_t x) { return comp.root(x); };
-  std::size_t boundary = 0;
-  {
-    Incidence inc(points.size(), tris, alive);
-    for (uint32_t f = 0; f < nf; ++f) {
-      if (!alive[f]) continue;
-      for (int i = 0; i < 3; ++i) {
-        uint32_t u = tris[f][i], w = tris[f][(i + 1) % 3];
-        bool shared = false;
-        for (uint32_t k = inc.start[u]; k < inc.start[u + 1]; ++k) {
-          uint32_t h = inc.faces[k];
-          if (h == f) continue;
-          const Tri &t = tris[h];
-          if (t[0] == w || t[1] == w || t[2] == w) {
-            if (h > f) comp.join(f, h);  // each pair once: h meets f on this edge too
-            shared = true;
-          }
-        }
-        boundary += !shared;
-      }
-    }
-  }
+  const std::size_t boundary = join_across_edges(tris, inc, comp);
+  inc = Incidence();
   // Number the components densely, in order of their root, so that the sums below take an
   // entry per component rather than per face (at a million points, 70 MB less at the end).
   std::vector<uint32_t> component(nf, kNone);
@@ -170,8 +215,9 @@ std::vector<Tri> oriented_faces(MeshState &mesh) {
 
 void finish_mesh(const PointSet &points, std::vector<Tri> &faces, moa_stats &stats) {
   std::vector<char> alive(faces.size(), 1);
-  stats.triangles_removed += enforce_single_fans(points.size(), faces, alive);
-  stats.boundary_edges = orient_outward(points, faces, alive);
+  Incidence inc;
+  stats.triangles_removed += enforce_single_fans(points.size(), faces, alive, inc);
+  stats.boundary_edges = orient_outward(points, faces, alive, inc);
   std::size_t kept = 0;
   for (std::size_t f = 0; f < faces.size(); ++f)
     if (alive[f]) faces[kept++] = faces[f];

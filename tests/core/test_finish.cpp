@@ -148,6 +148,30 @@ void removal_splits_a_later_fan(void **) {
               corner_sets({{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {5, 8, 6}, {5, 9, 8}}));
 }
 
+// A chain of 2,000 octahedra, each touching the next at a vertex (12,000 vertices: the search
+// for split fans and for the faces across each edge runs over many ranges in parallel): at
+// each touching vertex the earlier octahedron's fan stays, so every octahedron but the first
+// loses the four faces at its -x vertex.
+void chain_of_touching_surfaces(void **) {
+  constexpr uint32_t kCount = 2000;
+  std::vector<Vec3> xyz;
+  std::vector<Tri> faces;
+  for (uint32_t k = 0; k < kCount; ++k) {
+    add_octahedron(xyz, faces, {2.0 * k, 0, 0});
+    if (k == 0) continue;
+    const uint32_t minus_x = 6 * k + 1, previous_plus_x = 6 * (k - 1);
+    for (std::size_t f = 8 * k; f < faces.size(); ++f)
+      for (uint32_t &v : faces[f])
+        if (v == minus_x) v = previous_plus_x;
+  }
+  finish_and_count(xyz, faces, 4 * kCount + 4, 4 * (kCount - 1), 4 * (kCount - 1));
+  for (uint32_t k = 1; k < kCount; ++k) {
+    std::size_t at_shared = 0;
+    for (const Tri &t : faces) at_shared += std::count(t.begin(), t.end(), 6 * (k - 1));
+    if (at_shared != 4) fail_msg("touching vertex %u has %zu faces", 6 * (k - 1), at_shared);
+  }
+}
+
 }  // namespace
 
 int main(void) {
@@ -158,6 +182,7 @@ int main(void) {
       cmocka_unit_test(stray_triangle_at_closed_fan_removed),
       cmocka_unit_test(closed_surfaces_touching_at_a_vertex),
       cmocka_unit_test(removal_splits_a_later_fan),
+      cmocka_unit_test(chain_of_touching_surfaces),
   };
   return cmocka_run_group_tests(tests, nullptr, nullptr);
 }
