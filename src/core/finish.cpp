@@ -1,7 +1,6 @@
 #include "core/finish.hpp"
 
 #include <tbb/blocked_range.h>
-#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -125,38 +124,40 @@ std::size_t enforce_single_fans(std::size_t nv, const std::vector<Tri> &tris,
 }
 
 // Joins in `comp` the faces on each edge, and returns the number of edges with one face. Each
-// edge is looked at from its lower vertex, whose faces holding its upper one are those on it;
-// in parallel over the vertices, the joins then one thread (the sets they make do not depend
-// on the order).
+// edge is looked at from its lower vertex, whose faces holding its upper one are those on it:
+// in parallel over blocks of vertices, each block's findings kept apart, then joined on one
+// thread.
 std::size_t join_across_edges(const std::vector<Tri> &tris, const Incidence &inc,
                               DisjointSets &comp) {
   const uint32_t nv = uint32_t(inc.start.size() - 1);
+  constexpr uint32_t kBlock = 4096;
   struct Found {
     std::vector<std::pair<uint32_t, uint32_t>> pairs;  // faces sharing an edge
     std::size_t boundary = 0;
   };
-  tbb::enumerable_thread_specific<Found> found;
-  tbb::parallel_for(tbb::blocked_range<uint32_t>(0, nv, 4096),
-                    [&](const tbb::blocked_range<uint32_t> &r) {
-                      Found &out = found.local();
-                      std::vector<std::pair<uint32_t, uint32_t>> ends;  // (upper end, face)
-                      for (uint32_t u = r.begin(); u != r.end(); ++u) {
-                        ends.clear();
-                        for (uint32_t k = inc.start[u]; k < inc.start[u + 1]; ++k)
-                          for (uint32_t w : tris[inc.faces[k]])
-                            if (w > u) ends.push_back({w, inc.faces[k]});
-                        std::sort(ends.begin(), ends.end());
-                        for (std::size_t i = 0, j; i < ends.size(); i = j) {
-                          for (j = i + 1; j < ends.size() && ends[j].first == ends[i].first; ++j)
-                            out.pairs.push_back({ends[j - 1].second, ends[j].second});
-                          out.boundary += j == i + 1;
-                        }
-                      }
-                    });
+  std::vector<Found> found((nv + kBlock - 1) / kBlock);
+  tbb::parallel_for(std::size_t(0), found.size(), [&](std::size_t block) {
+    Found &out = found[block];
+    std::vector<std::pair<uint32_t, uint32_t>> ends;  // (upper end, face)
+    const uint32_t end = std::min(nv, uint32_t(block + 1) * kBlock);
+    for (uint32_t u = uint32_t(block) * kBlock; u < end; ++u) {
+      ends.clear();
+      for (uint32_t k = inc.start[u]; k < inc.start[u + 1]; ++k)
+        for (uint32_t w : tris[inc.faces[k]])
+          if (w > u) ends.push_back({w, inc.faces[k]});
+      std::sort(ends.begin(), ends.end());
+      for (std::size_t i = 0, j; i < ends.size(); i = j) {
+        for (j = i + 1; j < ends.size() && ends[j].first == ends[i].first; ++j)
+          out.pairs.push_back({ends[j - 1].second, ends[j].second});
+        out.boundary += j == i + 1;
+      }
+    }
+  });
   std::size_t boundary = 0;
   for (Found &f : found) {
     for (const auto &[a, b] : f.pairs) comp.join(a, b);
     boundary += f.boundary;
+    std::vector<std::pair<uint32_t, uint32_t>>().swap(f.pairs);
   }
   return boundary;
 }
