@@ -135,12 +135,12 @@ std::size_t join_across_edges(const std::vector<Tri> &tris, const Incidence &inc
     std::vector<std::pair<uint32_t, uint32_t>> pairs;  // faces sharing an edge
     std::size_t boundary = 0;
   };
-  std::vector<Found> found((nv + kBlock - 1) / kBlock);
+  std::vector<Found> found((std::size_t(nv) + kBlock - 1) / kBlock);
   tbb::parallel_for(std::size_t(0), found.size(), [&](std::size_t block) {
     Found &out = found[block];
     std::vector<std::pair<uint32_t, uint32_t>> ends;  // (upper end, face)
-    const uint32_t end = std::min(nv, uint32_t(block + 1) * kBlock);
-    for (uint32_t u = uint32_t(block) * kBlock; u < end; ++u) {
+    const uint32_t end = uint32_t(std::min<std::size_t>(nv, (block + 1) * kBlock));
+    for (uint32_t u = uint32_t(block * kBlock); u < end; ++u) {
       ends.clear();
       for (uint32_t k = inc.start[u]; k < inc.start[u + 1]; ++k)
         for (uint32_t w : tris[inc.faces[k]])
