@@ -72,6 +72,10 @@ std::size_t enforce_single_fans(std::size_t nv, const std::vector<Tri> &tris,
   for (bool changed = true; changed;) {
     changed = false;
     inc = Incidence(nv, tris, alive);
+    auto several_fans = [&](uint32_t v, std::vector<uint32_t> &scratch) {
+      const uint32_t b = inc.start[v], n = inc.start[v + 1] - b;
+      return n >= 2 && !one_live_fan(v, &inc.faces[b], n, tris, alive, scratch);
+    };
     // The vertices in several fans are found in parallel (nearly every vertex has one fan:
     // telling that is most of the work), then judged one by one in vertex order, each as the
     // removals at the vertices before it left its faces, as a pass over every vertex in order
@@ -79,16 +83,12 @@ std::size_t enforce_single_fans(std::size_t nv, const std::vector<Tri> &tris,
     tbb::parallel_for(tbb::blocked_range<uint32_t>(0, uint32_t(nv), 4096),
                       [&](const tbb::blocked_range<uint32_t> &r) {
                         std::vector<uint32_t> scratch;
-                        for (uint32_t v = r.begin(); v != r.end(); ++v) {
-                          const uint32_t b = inc.start[v], n = inc.start[v + 1] - b;
-                          to_judge[v] = n >= 2 && !one_live_fan(v, &inc.faces[b], n, tris, alive,
-                                                                 scratch);
-                        }
+                        for (uint32_t v = r.begin(); v != r.end(); ++v)
+                          to_judge[v] = several_fans(v, scratch);
                       });
     for (uint32_t v = 0; v < nv; ++v) {
-      if (!to_judge[v]) continue;
-      uint32_t b = inc.start[v], e = inc.start[v + 1], n = e - b;
-      if (n < 2 || one_live_fan(v, &inc.faces[b], n, tris, alive, others)) continue;
+      if (!to_judge[v] || !several_fans(v, others)) continue;
+      const uint32_t b = inc.start[v], n = inc.start[v + 1] - b;
       fan.reset(n);
       auto root = [&](uint32_t x) { return fan.root(x); };
       for (uint32_t i = 0; i < n; ++i)
