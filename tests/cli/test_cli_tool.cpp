@@ -211,13 +211,11 @@ void test_stdout_cannot_be_written(void **) {
   // earlier fails there, and by the end its reason is gone). One short line: held to the end.
   expect_error(g_moa.run("--version", "/dev/full"), 5,
                {"standard output: cannot write: No space left on device"});
-  const Run quiet = g_moa.run("reconstruct -q " + quote(input) + " -o " + quote(mesh),
-                                    "/dev/full");
+  const Run quiet = g_moa.run("reconstruct -q " + quote(input) + " -o " + quote(mesh), "/dev/full");
   assert_int_equal(quiet.code, 0);
   assert_true(quiet.err.empty());
   // The command's own error comes first, and alone.
-  expect_error(g_moa.run("check " + quote(path("missing.ply")), "/dev/full"), 3,
-               {"missing.ply"});
+  expect_error(g_moa.run("check " + quote(path("missing.ply")), "/dev/full"), 3, {"missing.ply"});
 }
 
 // More threads than the machine has: the run uses the cores there are, says so in the
