@@ -123,9 +123,9 @@ std::size_t cut_narrow_tunnels(GrowthState &g, std::size_t first_face);
 // Algorithm 2, the loop module (paper §3.5.2).
 void fill_loops(GrowthState &g, const std::function<void(double)> &tick);
 
-// Splits a triangle under each point left out, where the judgment allows; returns how many
-// points were taken in.
-std::size_t take_in_points(GrowthState &g);
+// Splits a triangle under each point left out (or each of `only` that is), where the
+// judgment allows; returns how many points were taken in.
+std::size_t take_in_points(GrowthState &g, const std::vector<uint32_t> *only = nullptr);
 
 // Flips edges to the other diagonal of their quad where that widens the smallest angle
 // (edge_flips.cpp); returns how many. `tick(fraction)` reports progress and may throw Cancelled.

@@ -8,6 +8,7 @@
 #include "core/disjoint_sets.hpp"
 #include "core/hole_patch.hpp"
 #include "core/loop_filler.hpp"
+#include "core/predicates.hpp"
 
 namespace moa {
 namespace {
@@ -35,6 +36,30 @@ constexpr std::size_t kMaxSpikeFaces = 6;
 // over the piece itself, a pillow of two layers.
 constexpr double kLayerFreePieceFaces = 1.0;
 
+// excise_crossed_and_patch: rounds of growing the ball, and the most faces inside it.
+constexpr int kExcisionRounds = 4;
+constexpr std::size_t kMaxExcised = 1024;
+
+// V - E + F of the faces, counting the vertices and edges they use. Faces that ring a hole
+// make an annulus (0) when the hole and they together make a disk; a handle among them takes
+// 2 off, a closed piece among them adds 2.
+long euler_characteristic(const std::vector<Tri> &faces) {
+  std::vector<uint32_t> vertices;
+  std::vector<uint64_t> edges;
+  for (const Tri &t : faces)
+    for (int i = 0; i < 3; ++i) {
+      const uint32_t a = t[i], b = t[(i + 1) % 3];
+      vertices.push_back(a);
+      edges.push_back(a < b ? hole_edge_key(a, b) : hole_edge_key(b, a));
+    }
+  std::sort(vertices.begin(), vertices.end());
+  std::sort(edges.begin(), edges.end());
+  const auto distinct = [](auto &v) {
+    return long(std::unique(v.begin(), v.end()) - v.begin());
+  };
+  return distinct(vertices) - distinct(edges) + long(faces.size());
+}
+
 }  // namespace
 
 // The loops of the mesh as it is that are holes (tangles' loops never are) short enough to be
@@ -54,7 +79,8 @@ std::vector<const Loop *> LoopFiller::trace_patchable_holes() {
 // and, in a piece much larger than the hole, to lie close over other faces. Such a hole sits
 // in a crumpled spot (noise, a misregistered overlap, a gap narrower than the spacing) where
 // every patch met a fold sharper than edge_fold_angle or a neighbouring layer: a ridge that
-// sharp is a lesser fault than the hole. Returns the holes closed.
+// sharp is a lesser fault than the hole. A hole whose patch crosses faces is patched after
+// clearing those (excise_crossed_and_patch). Returns the holes closed.
 std::size_t LoopFiller::patch_last_holes() {
   std::unordered_map<uint32_t, std::size_t> piece_faces;
   std::size_t closed = 0;
@@ -65,7 +91,8 @@ std::size_t LoopFiller::patch_last_holes() {
     const double n = double(hole->vertices.size());
     const bool layers_allowed = double(piece_faces[hole->piece]) >= kLayerFreePieceFaces * n * n;
     g_.judge.allow_sharp_folds(true);
-    closed += patch_pieces(hole->vertices, layers_allowed);
+    closed += patch_pieces(hole->vertices, layers_allowed) ||
+              excise_crossed_and_patch(hole->vertices, layers_allowed);
     g_.judge.allow_sharp_folds(false);
   }
   return closed;
@@ -271,6 +298,109 @@ bool LoopFiller::patch(const std::vector<uint32_t> &loop, bool layers_allowed) {
   if (tris.empty() || !g_.add_all_or_none(tris, layers_allowed)) return false;
   g_.stats.triangles_loops += tris.size();
   return true;
+}
+
+// At a crease sharper than a right angle the faces grown from its two sides can fold over
+// the hole between them: the hole's loop then rings faces that every patch of it crosses,
+// and no widening along the loop reaches them. The ball centred on the hole that holds its
+// loop and the faces its patch crosses is cleared (every face with a corner in it goes) and
+// the loop around the cleared disk is patched instead, the ball grown again while that patch
+// still crosses faces. Only if the cleared faces and the hole made a disk, whose border is
+// one loop: a handle or a separate piece in the ball is never taken away. Otherwise, or if no
+// patch passes, everything is put back. The points left inside go to the take-in again (see
+// fill_loops): a closed surface short of a few points beats a hole.
+bool LoopFiller::excise_crossed_and_patch(const std::vector<uint32_t> &hole, bool layers_allowed) {
+  const auto &w = g_.points.work;
+  Vec3 centre{};
+  for (uint32_t v : hole) centre = centre + w[v];
+  centre = centre * (1.0 / double(hole.size()));
+  double radius2 = 0;
+  for (uint32_t v : hole) radius2 = std::max(radius2, norm2(w[v] - centre));
+  std::vector<uint32_t> loop = hole;
+  std::vector<Tri> removed;
+  std::vector<uint32_t> faces;
+  for (int round = 0; round < kExcisionRounds; ++round) {
+    const std::vector<Tri> patch = smoothest_patch(g_.mesh, w, loop);
+    bool crossed = false;
+    for (const Tri &t : patch) {
+      Vec3 lo, hi;
+      g_.crossings.bounds(t, lo, hi);
+      faces.clear();
+      g_.crossings.faces_in_box(lo, hi, g_.mesh, faces);
+      const Vec3 tp[3] = {g_.points.exact(t[0]), g_.points.exact(t[1]), g_.points.exact(t[2])};
+      const unsigned ti[3] = {t[0], t[1], t[2]};
+      for (uint32_t f : faces) {
+        const Tri &q = g_.mesh.stored(f);
+        const Vec3 qp[3] = {g_.points.exact(q[0]), g_.points.exact(q[1]), g_.points.exact(q[2])};
+        const unsigned qi[3] = {q[0], q[1], q[2]};
+        if (!triangles_cross(tp, ti, qp, qi)) continue;
+        crossed = true;
+        for (uint32_t v : q) radius2 = std::max(radius2, norm2(w[v] - centre));
+      }
+    }
+    if (!crossed) break;
+    const double radius = std::sqrt(radius2);
+    const Vec3 reach{radius, radius, radius};
+    faces.clear();
+    g_.crossings.faces_in_box(centre - reach, centre + reach, g_.mesh, faces);
+    faces.erase(std::remove_if(faces.begin(), faces.end(),
+                               [&](uint32_t f) {
+                                 const Tri &q = g_.mesh.stored(f);
+                                 return std::none_of(q.begin(), q.end(), [&](uint32_t v) {
+                                   return norm2(w[v] - centre) <= radius2;
+                                 });
+                               }),
+                faces.end());
+    if (faces.size() > kMaxExcised) break;
+    const std::vector<Tri> gone = remove_faces(faces, false);
+    removed.insert(removed.end(), gone.begin(), gone.end());
+    std::vector<uint32_t> corners(loop);
+    for (const Tri &t : removed) corners.insert(corners.end(), t.begin(), t.end());
+    loop = single_loop_around(corners);
+    if (loop.empty() || loop.size() > kMaxPatchedLoop || euler_characteristic(removed) != 0) break;
+    if (patch_pieces(loop, layers_allowed)) {
+      g_.stats.triangles_removed += removed.size();
+      const std::size_t before = excised_points_.size();
+      for (const Tri &t : removed)
+        for (uint32_t v : t)
+          if (!g_.mesh.is_used(v)) excised_points_.push_back(v);
+      const auto fresh = excised_points_.begin() + std::ptrdiff_t(before);
+      std::sort(fresh, excised_points_.end());
+      excised_points_.erase(std::unique(fresh, excised_points_.end()), excised_points_.end());
+      return true;
+    }
+  }
+  for (const Tri &t : removed) g_.add_face(t);  // as it was before
+  return false;
+}
+
+// The loop of boundary edges through the given vertices, if the faces around them have
+// boundary edges in that one loop and in no other; nothing otherwise.
+std::vector<uint32_t> LoopFiller::single_loop_around(std::vector<uint32_t> corners) {
+  std::sort(corners.begin(), corners.end());
+  corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+  std::vector<uint32_t> faces;
+  for (uint32_t v : corners) {
+    const FacesAround around = g_.mesh.faces_at(v);
+    faces.insert(faces.end(), around.begin(), around.end());
+  }
+  std::sort(faces.begin(), faces.end());
+  faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+  out_.clear();
+  std::size_t edges = 0;
+  for (uint32_t f : faces) {
+    const Tri t = g_.mesh.oriented(f);
+    for (int i = 0; i < 3; ++i) {
+      uint32_t a = t[i], b = t[(i + 1) % 3], fs[2];
+      if (g_.mesh.edge_faces(a, b, fs) == 1) {
+        out_[b].push_back(a);
+        ++edges;
+      }
+    }
+  }
+  std::vector<Loop> loops = trace_loops(&corners);
+  if (loops.size() != 1 || loops[0].vertices.size() != edges) return {};
+  return std::move(loops[0].vertices);
 }
 
 // Removes every face at the loop's vertices; returns them as they were oriented.

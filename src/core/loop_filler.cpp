@@ -440,7 +440,11 @@ void fill_loops(GrowthState &g, const std::function<void(double)> &tick) {
   // The holes that every step above left open: first those of next to no area, whose patch
   // would be a needle; then the others once more, with sharper folds allowed.
   LoopFiller(g).close_slits();
-  LoopFiller(g).patch_last_holes();
+  LoopFiller last(g);
+  last.patch_last_holes();
+  // The points an excision left inside its patch are taken in again where they fit.
+  if (!last.excised_points().empty() && g.params.take_in_points != 0)
+    take_in_points(g, &last.excised_points());
   // In a contour stack, what is left between two contours is a band too wide for the above.
   LoopFiller(g).stitch_bands();
   g.stats.boundary_loops_after = LoopFiller(g).count_loops();

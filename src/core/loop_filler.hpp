@@ -113,10 +113,13 @@ class LoopFiller {
   // The boundary loops of the mesh as it is (loop_tracing.cpp).
   std::size_t count_loops();
   // Repairs after the rounds (hole_repair.cpp): the faces along holes that stayed open go;
-  // the last holes are patched whole; at the very end, once more with sharper folds allowed.
+  // the last holes are patched whole; at the very end, once more with sharper folds allowed
+  // (and after clearing the faces folded over the hole, if the patch crosses them).
   std::size_t widen_open_holes();
   std::size_t patch_open_holes();
   std::size_t patch_last_holes();
+  // The points patch_last_holes left without faces (excise_crossed_and_patch).
+  const std::vector<uint32_t> &excised_points() const { return excised_points_; }
   // Pieces (loop_pieces.cpp): strips between two pieces closed; stray pieces removed.
   std::size_t zip_parallel_loops();
   std::size_t drop_stray_pieces(bool layers = true);
@@ -170,6 +173,8 @@ class LoopFiller {
   bool widen_and_patch(const std::vector<uint32_t> &hole, Widening widening, int rings,
                        bool layers_allowed, std::size_t &widenings);
   bool clear_spike_and_patch(const std::vector<uint32_t> &hole);
+  bool excise_crossed_and_patch(const std::vector<uint32_t> &hole, bool layers_allowed);
+  std::vector<uint32_t> single_loop_around(std::vector<uint32_t> corners);
   bool patch_pieces(const std::vector<uint32_t> &loop, bool layers_allowed);
   bool patch(const std::vector<uint32_t> &loop, bool layers_allowed);
   std::vector<Tri> remove_stars(const std::vector<uint32_t> &loop);
@@ -192,6 +197,7 @@ class LoopFiller {
   std::vector<uint32_t> near_, sphere_;
   std::vector<Candidate> ranked_;
   bool behind_ = false;  // apexes from behind the rim face only (close_at_sharp_edges)
+  std::vector<uint32_t> excised_points_;
 };
 
 // Removes, at every vertex whose faces form several fans, the faces of all fans but the

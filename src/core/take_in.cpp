@@ -51,15 +51,21 @@ class PointTaker {
   // module took away) finds faces to split only once one of them is in: after each pass, the
   // points still out next to one just taken in are tried again (not every point still out:
   // on a scan with hundreds of outliers each pass re-added the faces of every failed try).
-  std::size_t run() {
+  // `only`: the points to try, if not every point left out.
+  std::size_t run(const std::vector<uint32_t> *only) {
     std::size_t taken = 0;
     std::vector<uint32_t> out, again;
     IndexMarks just_in;
     for (bool layers_allowed : {false, true}) {
       layers_allowed_ = layers_allowed;
       out.clear();
-      for (uint32_t p = 0; p < g_.points.size(); ++p)
-        if (!g_.mesh.is_used(p) && !beside_tangle(p)) out.push_back(p);
+      if (only) {
+        for (uint32_t p : *only)
+          if (!g_.mesh.is_used(p) && !beside_tangle(p)) out.push_back(p);
+      } else {
+        for (uint32_t p = 0; p < g_.points.size(); ++p)
+          if (!g_.mesh.is_used(p) && !beside_tangle(p)) out.push_back(p);
+      }
       while (!out.empty()) {
         just_in.clear();
         for (std::size_t i = 0; i < out.size(); ++i) {
@@ -267,6 +273,8 @@ class PointTaker {
 
 }  // namespace
 
-std::size_t take_in_points(GrowthState &g) { return PointTaker(g).run(); }
+std::size_t take_in_points(GrowthState &g, const std::vector<uint32_t> *only) {
+  return PointTaker(g).run(only);
+}
 
 }  // namespace moa

@@ -167,6 +167,23 @@ const Case &tetrahedron_case() {
   return c;
 }
 
+// A prism 2 long on an equilateral triangle of circumradius 1, sampled at random: three long
+// edges of 60 degrees, and the six of the ends at right angles.
+Points triangular_prism_samples(std::size_t n, std::uint64_t seed) {
+  std::vector<double> v;
+  for (double z : {-1.0, 1.0})
+    for (int k = 0; k < 3; ++k) {
+      const double a = 2 * M_PI * k / 3;
+      v.insert(v.end(), {std::cos(a), std::sin(a), z});
+    }
+  std::vector<std::uint32_t> t = {0, 2, 1, 3, 4, 5};
+  for (std::uint32_t k = 0; k < 3; ++k) {
+    const std::uint32_t a = k, b = (k + 1) % 3;
+    t.insert(t.end(), {a, b, b + 3, a, b + 3, a + 3});
+  }
+  return sample_mesh(v, t, n, seed);
+}
+
 const Case &tetrahedron_take_in_case() {
   // Sample 4: one point whose neighbours were all out stayed out before the take-in retried
   // the points next to one it had just taken in.
@@ -392,6 +409,23 @@ static void test_cone_take_in_closed_genus0(void **) {
 static void test_tetrahedron_take_in_closed_genus0(void **) {
   MOA_EXPECT(closed_failure(tetrahedron_take_in_case(), 0));
 }
+// Holes at a crease sharper than a right angle whose every patch crossed faces folded over from
+// the crease beneath them, each closed by the last patch once it took those faces away with
+// the faces around the hole (LoopFiller::excise_crossed_and_patch): 32 boundary edges in one
+// loop on the cone, 3 on the tetrahedron and 5 on the prism before.
+static void test_folds_at_sharp_creases_closed_genus0(void **) {
+  const std::pair<Case, double> cases[] = {
+      {make_case("random cone samples, seed 1", cone_samples(10000, 1)), 0.999},
+      {make_case("random tetrahedron samples, seed 3", tetrahedron_samples(20000, 3)), 1.0},
+      {make_case("random 60-degree prism samples, seed 1", triangular_prism_samples(20000, 1)),
+       1.0}};
+  for (const auto &[c, min_used] : cases) {
+    MOA_EXPECT(contract_failure(c));
+    MOA_EXPECT(determinism_failure(c));
+    MOA_EXPECT(closed_failure(c, 0, min_used));
+  }
+}
+
 // The 12 points (0, +-a, +-b) and their cyclic permutations.
 static Points cyclic_corners(double a, double b) {
   Points p;
@@ -570,6 +604,7 @@ int main(void) {
       cmocka_unit_test(test_drilled_plate_closed_genus5),
       MOA_CONTRACT_ENTRIES(tetrahedron),      cmocka_unit_test(test_tetrahedron_closed_genus0),
       cmocka_unit_test(test_tetrahedron_take_in_closed_genus0),
+      cmocka_unit_test(test_folds_at_sharp_creases_closed_genus0),
       cmocka_unit_test(test_polyhedron_corners_closed_genus0),
       cmocka_unit_test(test_tiny_spheres_closed_genus0),
       cmocka_unit_test(test_far_rings_closed_genus0),

@@ -6,6 +6,9 @@
 // last patch takes it down to 5 degrees, and no sharper. (On this clean blade the earlier
 // steps would close the hole another way, widening it and patching a tent inside the blade; in
 // crumpled spots of real clouds they find none.)
+// Then on a flat sheet whose hole holds a small closed piece: every patch crosses the piece, and
+// taking away the faces around the hole with those it crosses (as at a fold along a sharp
+// crease) would delete the piece with its points, so the hole is left as it was.
 #include <cmath>
 #include <cstdint>
 #include <utility>
@@ -139,12 +142,64 @@ void blade_sharper_than_5_degrees_kept_open(void **) {
   assert_int_equal(o.over_full_edges, 0);
 }
 
+// A flat sheet of 12 x 12 unit squares at z = 0 without the 2 x 2 squares at its centre, and in
+// that hole an octahedron of radius 0.4 centred 0.05 above the sheet's plane, which the plane
+// cuts: every patch of the hole crosses it.
+struct SheetWithPiece {
+  static constexpr int n = 12;
+  std::vector<double> xyz;
+  std::vector<Tri> faces;
+
+  SheetWithPiece() {
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i) xyz.insert(xyz.end(), {double(i), double(j), 0.0});
+    auto at = [](int i, int j) { return uint32_t(j * (n + 1) + i); };
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        if ((i == 5 || i == 6) && (j == 5 || j == 6)) continue;  // the hole
+        faces.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+        faces.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+      }
+    const double c[3] = {6.0, 6.0, 0.05}, r = 0.4;
+    const uint32_t first = uint32_t(xyz.size() / 3);
+    for (int axis = 0; axis < 3; ++axis)
+      for (double sign : {1.0, -1.0}) {
+        double p[3] = {c[0], c[1], c[2]};
+        p[axis] += sign * r;
+        xyz.insert(xyz.end(), {p[0], p[1], p[2]});
+      }
+    // Corners first + 0..5: +x, -x, +y, -y, +z, -z; a face for each octant.
+    for (uint32_t x : {0u, 1u})
+      for (uint32_t y : {2u, 3u})
+        for (uint32_t z : {4u, 5u})
+          faces.push_back(moa::test::facing_away(xyz, first + x, first + y, first + z, c));
+  }
+};
+
+// The octahedron's faces and the sheet's are all still there, and the hole is open.
+void hole_around_a_closed_piece_left_open(void **) {
+  const SheetWithPiece sheet;
+  moa::test::HandMesh mesh(sheet.xyz, sheet.faces);
+  assert_true(mesh.loaded());
+  moa::GrowthState &g = mesh.g;
+  const moa::test::MeshCounts before = moa::test::count_mesh(g.mesh);
+  assert_int_equal(before.open_edges, 4 * SheetWithPiece::n + 8);  // the border and the hole
+
+  assert_int_equal(moa::LoopFiller(g).patch_last_holes(), 0);
+  const moa::test::MeshCounts after = moa::test::count_mesh(g.mesh);
+  assert_int_equal(after.faces, before.faces);
+  assert_int_equal(after.vertices_used, before.vertices_used);
+  assert_int_equal(after.open_edges, before.open_edges);
+  assert_int_equal(after.euler_characteristic(), before.euler_characteristic());
+}
+
 }  // namespace
 
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(blade_hole_closed_by_last_patch),
       cmocka_unit_test(blade_sharper_than_5_degrees_kept_open),
+      cmocka_unit_test(hole_around_a_closed_piece_left_open),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
