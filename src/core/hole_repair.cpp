@@ -60,6 +60,20 @@ long euler_characteristic(const std::vector<Tri> &faces) {
   return distinct(vertices) - distinct(edges) + long(faces.size());
 }
 
+// The centre of the loop's vertices, and the square of the distance from it to the farthest.
+struct Ball {
+  Vec3 centre;
+  double radius2;
+};
+Ball ball_around(const std::vector<Vec3> &points, const std::vector<uint32_t> &loop) {
+  Vec3 centre{};
+  for (uint32_t v : loop) centre = centre + points[v];
+  centre = centre * (1.0 / double(loop.size()));
+  double radius2 = 0;
+  for (uint32_t v : loop) radius2 = std::max(radius2, norm2(points[v] - centre));
+  return {centre, radius2};
+}
+
 }  // namespace
 
 // The loops of the mesh as it is that are holes (tangles' loops never are) short enough to be
@@ -211,11 +225,9 @@ bool LoopFiller::widen_and_patch(const std::vector<uint32_t> &hole, Widening wid
 // hole's centre, within the hole's radius of it.
 bool LoopFiller::clear_spike_and_patch(const std::vector<uint32_t> &hole) {
   const auto &w = g_.points.work;
-  Vec3 centre{};
-  for (uint32_t v : hole) centre = centre + w[v];
-  centre = centre * (1.0 / double(hole.size()));
-  double radius2 = 0;
-  for (uint32_t v : hole) radius2 = std::max(radius2, norm2(w[v] - centre));
+  const Ball ball = ball_around(w, hole);
+  const Vec3 centre = ball.centre;
+  const double radius2 = ball.radius2;
   std::vector<uint32_t> inside;
   for (uint32_t v : hole) {
     const uint32_t *nb = g_.nb.of(v);
@@ -311,11 +323,9 @@ bool LoopFiller::patch(const std::vector<uint32_t> &loop, bool layers_allowed) {
 // fill_loops): a closed surface short of a few points beats a hole.
 bool LoopFiller::excise_crossed_and_patch(const std::vector<uint32_t> &hole, bool layers_allowed) {
   const auto &w = g_.points.work;
-  Vec3 centre{};
-  for (uint32_t v : hole) centre = centre + w[v];
-  centre = centre * (1.0 / double(hole.size()));
-  double radius2 = 0;
-  for (uint32_t v : hole) radius2 = std::max(radius2, norm2(w[v] - centre));
+  const Ball ball = ball_around(w, hole);
+  const Vec3 centre = ball.centre;
+  double radius2 = ball.radius2;
   std::vector<uint32_t> loop = hole;
   std::vector<Tri> removed;
   std::vector<uint32_t> faces;
@@ -379,8 +389,17 @@ bool LoopFiller::excise_crossed_and_patch(const std::vector<uint32_t> &hole, boo
 std::vector<uint32_t> LoopFiller::single_loop_around(std::vector<uint32_t> corners) {
   std::sort(corners.begin(), corners.end());
   corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+  const std::size_t edges = open_edges_around(corners);
+  std::vector<Loop> loops = trace_loops(&corners);
+  if (loops.size() != 1 || loops[0].vertices.size() != edges) return {};
+  return std::move(loops[0].vertices);
+}
+
+// Puts the boundary edges of the faces around the given vertices in out_, each reversed (as
+// collect_hole_edges does), for trace_loops; returns how many.
+std::size_t LoopFiller::open_edges_around(const std::vector<uint32_t> &vertices) {
   std::vector<uint32_t> faces;
-  for (uint32_t v : corners) {
+  for (uint32_t v : vertices) {
     const FacesAround around = g_.mesh.faces_at(v);
     faces.insert(faces.end(), around.begin(), around.end());
   }
@@ -389,6 +408,7 @@ std::vector<uint32_t> LoopFiller::single_loop_around(std::vector<uint32_t> corne
   out_.clear();
   std::size_t edges = 0;
   for (uint32_t f : faces) {
+    if (!g_.mesh.alive(f)) continue;
     const Tri t = g_.mesh.oriented(f);
     for (int i = 0; i < 3; ++i) {
       uint32_t a = t[i], b = t[(i + 1) % 3], fs[2];
@@ -398,9 +418,7 @@ std::vector<uint32_t> LoopFiller::single_loop_around(std::vector<uint32_t> corne
       }
     }
   }
-  std::vector<Loop> loops = trace_loops(&corners);
-  if (loops.size() != 1 || loops[0].vertices.size() != edges) return {};
-  return std::move(loops[0].vertices);
+  return edges;
 }
 
 // Removes every face at the loop's vertices; returns them as they were oriented.
@@ -448,23 +466,9 @@ std::vector<Tri> LoopFiller::remove_faces(std::vector<uint32_t> faces, bool keep
 // edge of the wider hole, so the cost stays local.
 std::vector<uint32_t> LoopFiller::loop_around(const std::vector<uint32_t> &old,
                                               const std::vector<Tri> &rim) {
-  std::vector<uint32_t> faces;
-  for (const Tri &t : rim)
-    for (uint32_t v : t) {
-      const FacesAround around = g_.mesh.faces_at(v);
-      faces.insert(faces.end(), around.begin(), around.end());
-    }
-  std::sort(faces.begin(), faces.end());
-  faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
-  out_.clear();
-  for (uint32_t f : faces) {
-    if (!g_.mesh.alive(f)) continue;
-    Tri t = g_.mesh.oriented(f);
-    for (int i = 0; i < 3; ++i) {
-      uint32_t a = t[i], b = t[(i + 1) % 3], fs[2];
-      if (g_.mesh.edge_faces(a, b, fs) == 1) out_[b].push_back(a);
-    }
-  }
+  std::vector<uint32_t> corners;
+  for (const Tri &t : rim) corners.insert(corners.end(), t.begin(), t.end());
+  open_edges_around(corners);
   std::vector<Loop> loops = trace_loops(&old);
   std::vector<uint32_t> sorted(old);
   std::sort(sorted.begin(), sorted.end());

@@ -175,6 +175,7 @@ class LoopFiller {
   bool clear_spike_and_patch(const std::vector<uint32_t> &hole);
   bool excise_crossed_and_patch(const std::vector<uint32_t> &hole, bool layers_allowed);
   std::vector<uint32_t> single_loop_around(std::vector<uint32_t> corners);
+  std::size_t open_edges_around(const std::vector<uint32_t> &vertices);
   bool patch_pieces(const std::vector<uint32_t> &loop, bool layers_allowed);
   bool patch(const std::vector<uint32_t> &loop, bool layers_allowed);
   std::vector<Tri> remove_stars(const std::vector<uint32_t> &loop);
