@@ -59,13 +59,13 @@ class PointTaker {
     for (bool layers_allowed : {false, true}) {
       layers_allowed_ = layers_allowed;
       out.clear();
-      if (only) {
-        for (uint32_t p : *only)
-          if (!g_.mesh.is_used(p) && !beside_tangle(p)) out.push_back(p);
-      } else {
-        for (uint32_t p = 0; p < g_.points.size(); ++p)
-          if (!g_.mesh.is_used(p) && !beside_tangle(p)) out.push_back(p);
-      }
+      const auto offer = [&](uint32_t p) {
+        if (!g_.mesh.is_used(p) && !beside_tangle(p)) out.push_back(p);
+      };
+      if (only)
+        std::for_each(only->begin(), only->end(), offer);
+      else
+        for (uint32_t p = 0; p < g_.points.size(); ++p) offer(p);
       while (!out.empty()) {
         just_in.clear();
         for (std::size_t i = 0; i < out.size(); ++i) {
