@@ -8,7 +8,6 @@
 #include "core/disjoint_sets.hpp"
 #include "core/hole_patch.hpp"
 #include "core/loop_filler.hpp"
-#include "core/predicates.hpp"
 
 namespace moa {
 namespace {
@@ -333,19 +332,11 @@ bool LoopFiller::excise_crossed_and_patch(const std::vector<uint32_t> &hole, boo
     const std::vector<Tri> patch = smoothest_patch(g_.mesh, w, loop);
     bool crossed = false;
     for (const Tri &t : patch) {
-      Vec3 lo, hi;
-      g_.crossings.bounds(t, lo, hi);
       faces.clear();
-      g_.crossings.faces_in_box(lo, hi, g_.mesh, faces);
-      const Vec3 tp[3] = {g_.points.exact(t[0]), g_.points.exact(t[1]), g_.points.exact(t[2])};
-      const unsigned ti[3] = {t[0], t[1], t[2]};
+      g_.crossings.faces_crossed(t, g_.mesh, faces);
       for (uint32_t f : faces) {
-        const Tri &q = g_.mesh.stored(f);
-        const Vec3 qp[3] = {g_.points.exact(q[0]), g_.points.exact(q[1]), g_.points.exact(q[2])};
-        const unsigned qi[3] = {q[0], q[1], q[2]};
-        if (!triangles_cross(tp, ti, qp, qi)) continue;
         crossed = true;
-        for (uint32_t v : q) radius2 = std::max(radius2, norm2(w[v] - centre));
+        for (uint32_t v : g_.mesh.stored(f)) radius2 = std::max(radius2, norm2(w[v] - centre));
       }
     }
     if (!crossed) break;

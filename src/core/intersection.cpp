@@ -234,14 +234,17 @@ void CrossingIndex::face_added(uint32_t f, MeshState &mesh) {
   if (pending + removed > std::max<std::size_t>(4096, committed_ / 2)) rebuild(mesh);
 }
 
-bool CrossingIndex::test_exact(const Tri &t, uint32_t f, MeshState &mesh) {
-  if (tested_.has(f) || !mesh.alive(f)) return false;
-  tested_.set(f);
-  const Tri &g = mesh.stored(f);
+bool CrossingIndex::meet_exactly(const Tri &t, const Tri &g) const {
   const Vec3 tp[3] = {points_.exact(t[0]), points_.exact(t[1]), points_.exact(t[2])};
   const Vec3 gp[3] = {points_.exact(g[0]), points_.exact(g[1]), points_.exact(g[2])};
   const unsigned ti[3] = {t[0], t[1], t[2]}, gi[3] = {g[0], g[1], g[2]};
   return triangles_cross(tp, ti, gp, gi);
+}
+
+bool CrossingIndex::test_exact(const Tri &t, uint32_t f, MeshState &mesh) {
+  if (tested_.has(f) || !mesh.alive(f)) return false;
+  tested_.set(f);
+  return meet_exactly(t, mesh.stored(f));
 }
 
 void CrossingIndex::next_query() { tested_.clear(); }
@@ -396,6 +399,16 @@ void CrossingIndex::faces_in_box(const Vec3 &lo, const Vec3 &hi, MeshState &mesh
     if (boxes_meet(flo, fhi, lo, hi)) out.push_back(f);
     return false;
   });
+}
+
+void CrossingIndex::faces_crossed(const Tri &t, MeshState &mesh, std::vector<uint32_t> &out) {
+  Vec3 lo, hi;
+  bounds(t, lo, hi);
+  const std::size_t first = out.size();
+  faces_in_box(lo, hi, mesh, out);
+  out.erase(std::remove_if(out.begin() + std::ptrdiff_t(first), out.end(),
+                           [&](uint32_t f) { return !meet_exactly(t, mesh.stored(f)); }),
+            out.end());
 }
 
 }  // namespace moa

@@ -48,6 +48,9 @@ class CrossingIndex {
   bool crosses(const Tri &t, double pad, MeshState &mesh, std::vector<uint32_t> &near);
   // Appends to `out` the live faces whose bounding boxes meet the box lo..hi.
   void faces_in_box(const Vec3 &lo, const Vec3 &hi, MeshState &mesh, std::vector<uint32_t> &out);
+  // Appends to `out` every live face that triangle t would meet anywhere other than in shared
+  // vertices and edges (all of them, where crosses stops at the first).
+  void faces_crossed(const Tri &t, MeshState &mesh, std::vector<uint32_t> &out);
   // Registers face f (already added to mesh). The scene reads the mesh's face records in place:
   // an add that moves them is followed by add_all instead (GrowthState::add_face).
   void face_added(uint32_t f, MeshState &mesh);
@@ -75,6 +78,8 @@ class CrossingIndex {
   // The face behind an Embree primitive of the committed scene.
   uint32_t face_of(uint32_t prim) const { return scene_faces_.empty() ? prim : scene_faces_[prim]; }
   void grid_insert(uint32_t f, const Tri &t);
+  // Whether t and g meet other than in shared vertices and edges (exact predicates).
+  bool meet_exactly(const Tri &t, const Tri &g) const;
   bool test_exact(const Tri &t, uint32_t f, MeshState &mesh);
   void next_query();
   // Calls visit(face) for the live oversized faces, dropping the removed ones.
