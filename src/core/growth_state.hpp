@@ -110,7 +110,11 @@ void build_mesh(GrowthState &g, const std::function<void(double)> &tick);
 
 // Finds pieces of the mesh that a join turned inside out (their seam with the rest can never
 // close), cuts them free and turns them round; returns how many (orientation_repair.cpp).
-std::size_t repair_inside_out_patches(GrowthState &g);
+// `contradicting`, if given, receives the number of open-edge pairs found contradicting.
+std::size_t repair_inside_out_patches(GrowthState &g, std::size_t *contradicting = nullptr);
+// Finds regions that face the wrong way by the parity of rays cast from their faces, cuts
+// them free and turns them round; returns how many (parity_orientation.cpp).
+std::size_t turn_regions_against_ray_parity(GrowthState &g);
 
 // Cuts the bridges that made a handle with a waist of three or four edges, near the faces
 // numbered from first_face on (see handle_cut.cpp); returns how many.

@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <new>
@@ -409,6 +410,36 @@ void CrossingIndex::faces_crossed(const Tri &t, MeshState &mesh, std::vector<uin
   out.erase(std::remove_if(out.begin() + std::ptrdiff_t(first), out.end(),
                            [&](uint32_t f) { return !meet_exactly(t, mesh.stored(f)); }),
             out.end());
+}
+
+std::size_t CrossingIndex::faces_along_ray(const Vec3 &p, const Vec3 &d, uint32_t skip,
+                                           const MeshState &mesh,
+                                           std::vector<uint32_t> &hits) const {
+  hits.clear();
+  if (!scene_ || committed_ == 0) return 0;
+  CollectContext cc;
+  rtcInitIntersectContext(&cc.base);
+  cc.base.filter = collect_filter;
+  cc.hits = &hits;
+  RTCRayHit rh{};
+  const Vec3 o = in_frame(p);
+  rh.ray.org_x = float(o.x);
+  rh.ray.org_y = float(o.y);
+  rh.ray.org_z = float(o.z);
+  rh.ray.dir_x = float(d.x);
+  rh.ray.dir_y = float(d.y);
+  rh.ray.dir_z = float(d.z);
+  rh.ray.tnear = 0.f;
+  rh.ray.tfar = std::numeric_limits<float>::infinity();
+  rh.ray.mask = 0xffffffffu;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(static_cast<RTCScene>(scene_), &cc.base, &rh);
+  for (uint32_t &prim : hits) prim = face_of(prim);
+  std::sort(hits.begin(), hits.end());
+  hits.erase(std::unique(hits.begin(), hits.end()), hits.end());
+  return std::size_t(std::count_if(hits.begin(), hits.end(), [&](uint32_t f) {
+    return f != skip && f < committed_ && mesh.alive(f);
+  }));
 }
 
 }  // namespace moa

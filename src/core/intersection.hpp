@@ -51,6 +51,11 @@ class CrossingIndex {
   // Appends to `out` every live face that triangle t would meet anywhere other than in shared
   // vertices and edges (all of them, where crosses stops at the first).
   void faces_crossed(const Tri &t, MeshState &mesh, std::vector<uint32_t> &out);
+  // How many live faces other than `skip` the ray from p along d (work units) meets, each
+  // counted once. Every face must be committed (add_all, no face_added since); safe to call
+  // from several threads at once. `hits` is scratch space.
+  std::size_t faces_along_ray(const Vec3 &p, const Vec3 &d, uint32_t skip, const MeshState &mesh,
+                              std::vector<uint32_t> &hits) const;
   // Registers face f (already added to mesh). The scene reads the mesh's face records in place:
   // an add that moves them is followed by add_all instead (GrowthState::add_face).
   void face_added(uint32_t f, MeshState &mesh);

@@ -48,6 +48,8 @@ struct Segment {
 
 // Rounds of repair_inside_out_patches, each followed by growth over the seams it reopened.
 constexpr int kRepairRounds = 3;
+// Contradicting pairs left after them that call for the rays of turn_regions_against_ray_parity.
+constexpr std::size_t kMinParityPairs = 8;
 
 using SegmentList = std::priority_queue<Segment, std::vector<Segment>, std::greater<Segment>>;
 
@@ -337,9 +339,22 @@ void grow(GrowthState &g, const std::function<void(double)> &tick) {
   builder.requeue_open_edges();
   builder.run(tick, 0.8, 1.0);
   // Seams that cannot close because one side was turned inside out: turned back, they can.
-  for (int round = 0; round < kRepairRounds && repair_inside_out_patches(g) > 0; ++round) {
+  // Returns the contradicting pairs the last round found.
+  auto repair_rounds = [&] {
+    std::size_t contradicting = 0;
+    for (int round = 0; round < kRepairRounds && repair_inside_out_patches(g, &contradicting) > 0;
+         ++round) {
+      builder.requeue_open_edges();
+      builder.run(tick, 1.0, 1.0);
+    }
+    return contradicting;
+  };
+  // Many seams still contradicting: a region tied to the rest too widely for a cut, which rays
+  // can tell (parity_orientation.cpp).
+  if (repair_rounds() >= kMinParityPairs && turn_regions_against_ray_parity(g) > 0) {
     builder.requeue_open_edges();
     builder.run(tick, 1.0, 1.0);
+    repair_rounds();
   }
 }
 

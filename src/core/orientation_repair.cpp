@@ -301,9 +301,10 @@ std::size_t cut_patches(GrowthState &g, const FacePairs &pairs, const FacePairs 
 
 }  // namespace
 
-std::size_t repair_inside_out_patches(GrowthState &g) {
+std::size_t repair_inside_out_patches(GrowthState &g, std::size_t *contradicting) {
   FacePairs pairs, agreeing;
   seam_pairs(g, open_edges(g), pairs, agreeing);
+  if (contradicting) *contradicting = pairs.size();
   if (pairs.empty()) return 0;
   // The face graph takes 24 bytes a face, the crossing index's Embree scene about 36, and no
   // crossing is tested meanwhile: the scene is set aside and built again after, with the

@@ -184,6 +184,20 @@ Points triangular_prism_samples(std::size_t n, std::uint64_t seed) {
   return sample_mesh(v, t, n, seed);
 }
 
+// A prism 3 long whose cross-section is a blade: an edge of 40 degrees at x = 0 and two of 70
+// at x = 1, sampled at random.
+Points blade_samples(std::size_t n, std::uint64_t seed) {
+  const double half = std::tan(20 * M_PI / 180);
+  std::vector<double> v;
+  for (double z : {-1.5, 1.5}) v.insert(v.end(), {0, 0, z, 1, half, z, 1, -half, z});
+  std::vector<std::uint32_t> t = {0, 2, 1, 3, 4, 5};
+  for (std::uint32_t k = 0; k < 3; ++k) {
+    const std::uint32_t a = k, b = (k + 1) % 3;
+    t.insert(t.end(), {a, b, b + 3, a, b + 3, a + 3});
+  }
+  return sample_mesh(v, t, n, seed);
+}
+
 const Case &tetrahedron_take_in_case() {
   // Sample 4: one point whose neighbours were all out stayed out before the take-in retried
   // the points next to one it had just taken in.
@@ -436,6 +450,16 @@ static void test_cone_base_inside_out_turned(void **) {
   MOA_EXPECT(closed_failure(c, 0));
 }
 
+// A 40-degree blade whose far side Algorithm 1 carried round the blade inside out, tied to the
+// rest along the whole blade (no small cut holds it): the rays' parity turned it
+// (parity_orientation.cpp). 1,073 boundary edges and genus 3 before.
+static void test_blade_side_turned_by_ray_parity(void **) {
+  const Case c = make_case("random 40-degree blade samples, seed 1", blade_samples(20000, 1));
+  MOA_EXPECT(contract_failure(c));
+  MOA_EXPECT(determinism_failure(c));
+  MOA_EXPECT(closed_failure(c, 0, 0.999));
+}
+
 // The 12 points (0, +-a, +-b) and their cyclic permutations.
 static Points cyclic_corners(double a, double b) {
   Points p;
@@ -616,6 +640,7 @@ int main(void) {
       cmocka_unit_test(test_tetrahedron_take_in_closed_genus0),
       cmocka_unit_test(test_folds_at_sharp_creases_closed_genus0),
       cmocka_unit_test(test_cone_base_inside_out_turned),
+      cmocka_unit_test(test_blade_side_turned_by_ray_parity),
       cmocka_unit_test(test_polyhedron_corners_closed_genus0),
       cmocka_unit_test(test_tiny_spheres_closed_genus0),
       cmocka_unit_test(test_far_rings_closed_genus0),

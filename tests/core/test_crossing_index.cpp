@@ -1,7 +1,8 @@
 // The crossing index (src/core/intersection.hpp) on a cloud that one far point squeezes into a
 // corner of its unit box: a flat grid, 1 apart, and a point ten million away. Its boxes must stay
 // local (before, each box's padding covered the whole grid, and every crossing test tested
-// every face), and Embree, in single precision, must still find the faces a triangle crosses.
+// every face), and Embree, in single precision, must still find the faces a triangle crosses,
+// and count those a ray passes.
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -111,6 +112,26 @@ void second_index_shares_the_points(void **) {
   assert_false(b.crosses({g.extra(0), g.extra(2), g.extra(3)}, pad, mesh_b, near));
 }
 
+// Rays for the inside-out regions (parity_orientation.cpp): every live face they pass through
+// counts once, the face they leave from and removed faces not at all.
+void rays_count_the_faces_they_pass(void **) {
+  SqueezedGrid g;
+  moa::MeshState mesh(g.points.size());
+  moa::CrossingIndex index(g.points, 2 * g.spacing());
+  const uint32_t above = mesh.add({g.extra(0), g.extra(2), g.extra(3)});
+  triangulate(g, mesh, index);
+  const auto &w = g.points.work;
+  const Vec3 centre = (w[g.extra(0)] + w[g.extra(2)] + w[g.extra(3)]) * (1.0 / 3.0);
+  const Vec3 up{0, 0, 1}, down{0, 0, -1}, below = centre - up * (2 * g.spacing());
+  std::vector<uint32_t> hits;
+  assert_int_equal(index.faces_along_ray(below, up, moa::kNone, mesh, hits), 2);
+  assert_int_equal(index.faces_along_ray(below, down, moa::kNone, mesh, hits), 0);
+  assert_int_equal(index.faces_along_ray(centre, up, above, mesh, hits), 0);
+  assert_int_equal(index.faces_along_ray(centre, down, above, mesh, hits), 1);
+  mesh.remove(above);
+  assert_int_equal(index.faces_along_ray(below, up, moa::kNone, mesh, hits), 1);
+}
+
 }  // namespace
 
 int main(void) {
@@ -118,6 +139,7 @@ int main(void) {
       cmocka_unit_test(boxes_stay_local),
       cmocka_unit_test(crossings_found_through_embree),
       cmocka_unit_test(second_index_shares_the_points),
+      cmocka_unit_test(rays_count_the_faces_they_pass),
   };
   return cmocka_run_group_tests(tests, nullptr, nullptr);
 }
