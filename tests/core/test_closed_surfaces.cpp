@@ -452,11 +452,12 @@ static void test_cone_base_inside_out_turned(void **) {
 
 // A 40-degree blade whose far side Algorithm 1 carried round the blade inside out, tied to the
 // rest along the whole blade (no small cut holds it): the rays' parity turned it
-// (parity_orientation.cpp). 1,073 boundary edges and genus 3 before.
+// (parity_orientation.cpp). 1,073 boundary edges and genus 3 before. (No second run with one
+// thread: each face's vote depends on the face alone, and this file is among the longest
+// under the sanitizers.)
 static void test_blade_side_turned_by_ray_parity(void **) {
   const Case c = make_case("random 40-degree blade samples, seed 1", blade_samples(20000, 1));
   MOA_EXPECT(contract_failure(c));
-  MOA_EXPECT(determinism_failure(c));
   MOA_EXPECT(closed_failure(c, 0, 0.999));
 }
 
