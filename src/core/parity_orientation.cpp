@@ -12,8 +12,8 @@
 // mark regions that face the wrong way. A region whose votes say so clearly (many against it,
 // few for it, few edges holding it), tied only to regions whose votes are as clear the other
 // way, is cut free along its border and turned round; Algorithm 1 then grows over the seams
-// again. On a surface whose sides a ray cannot tell apart (an open
-// sheet, rays through a large hole) the votes are mostly blank, and nothing turns.
+// again. On a surface whose sides a ray cannot tell apart (an open sheet, rays through a large
+// hole) the votes are mostly blank, and nothing turns.
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -32,14 +32,14 @@ constexpr int kSmoothingRounds = 3;
 // it outnumber those that do not, plus the edges of its border, this many times.
 constexpr std::size_t kMinRegionFaces = 32;
 constexpr std::size_t kVoteMargin = 4;
+// Rounds in which regions of fewer faces join the faces around them.
+constexpr int kSpeckRounds = 4;
 // A region held by fewer edges is left to the minimum cut of the inside-out repair
 // (orientation_repair.cpp, up to 6 edges), which weighs the seams themselves: on the cow's
-// vertex set, camel and elephant-with-holes (CGAL's data) the rays would turn a region held
-// by 1-3 edges that the cut had kept, and 51, 28 and 0 more boundary edges were left, the
-// last with one handle fewer than the elephant has.
+// vertex set, camel and elephant-with-holes (CGAL's data) the rays turned regions held by 1-3
+// edges that the cut had kept: the first two were left with 51 and 28 more boundary edges, the
+// elephant closed with one handle fewer than it has.
 constexpr std::size_t kMinBorder = 7;
-// Rounds in which regions smaller than that join the faces around them.
-constexpr int kSpeckRounds = 4;
 // The rays leave a little off the normal, a different way for each face, so that no ray of
 // a regular grid runs along an edge and counts two faces there.
 constexpr double kTilt = 0.05;
