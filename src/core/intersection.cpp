@@ -55,6 +55,22 @@ void collect_filter(const RTCFilterFunctionNArguments *args) {
   args->valid[0] = 0;  // keep traversing: we want every face along the segment
 }
 
+// A ray from o along d (Embree's frame) over [0, tfar], to be hit anywhere.
+RTCRayHit ray_along(const Vec3 &o, const Vec3 &d, float tfar) {
+  RTCRayHit rh{};
+  rh.ray.org_x = float(o.x);
+  rh.ray.org_y = float(o.y);
+  rh.ray.org_z = float(o.z);
+  rh.ray.dir_x = float(d.x);
+  rh.ray.dir_y = float(d.y);
+  rh.ray.dir_z = float(d.z);
+  rh.ray.tnear = 0.f;
+  rh.ray.tfar = tfar;
+  rh.ray.mask = 0xffffffffu;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  return rh;
+}
+
 bool collect_point_query(RTCPointQueryFunctionArguments *args) {
   static_cast<std::vector<uint32_t> *>(args->userPtr)->push_back(args->primID);
   return false;
@@ -343,19 +359,9 @@ bool CrossingIndex::crosses(const Tri &t, double pad, MeshState &mesh,
     cc.hits = &found_;
     for (int e = 0; e < 3; ++e) {
       const Vec3 &p = points_.placed()[t[e]], &q = points_.placed()[t[(e + 1) % 3]];
-      RTCRayHit rh{};
       // The segment, lengthened slightly at both ends so float rounding cannot shorten it.
       const Vec3 d = (q - p) * embree_->unit, o = in_frame(p) - d * 1e-4;
-      rh.ray.org_x = float(o.x);
-      rh.ray.org_y = float(o.y);
-      rh.ray.org_z = float(o.z);
-      rh.ray.dir_x = float(d.x);
-      rh.ray.dir_y = float(d.y);
-      rh.ray.dir_z = float(d.z);
-      rh.ray.tnear = 0.f;
-      rh.ray.tfar = 1.0002f;
-      rh.ray.mask = 0xffffffffu;
-      rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+      RTCRayHit rh = ray_along(o, d, 1.0002f);
       rtcIntersect1(scene, &cc.base, &rh);
     }
     for (uint32_t prim : found_) {
@@ -421,18 +427,7 @@ std::size_t CrossingIndex::faces_along_ray(const Vec3 &p, const Vec3 &d, uint32_
   rtcInitIntersectContext(&cc.base);
   cc.base.filter = collect_filter;
   cc.hits = &hits;
-  RTCRayHit rh{};
-  const Vec3 o = in_frame(p);
-  rh.ray.org_x = float(o.x);
-  rh.ray.org_y = float(o.y);
-  rh.ray.org_z = float(o.z);
-  rh.ray.dir_x = float(d.x);
-  rh.ray.dir_y = float(d.y);
-  rh.ray.dir_z = float(d.z);
-  rh.ray.tnear = 0.f;
-  rh.ray.tfar = std::numeric_limits<float>::infinity();
-  rh.ray.mask = 0xffffffffu;
-  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  RTCRayHit rh = ray_along(in_frame(p), d, std::numeric_limits<float>::infinity());
   rtcIntersect1(static_cast<RTCScene>(scene_), &cc.base, &rh);
   for (uint32_t &prim : hits) prim = face_of(prim);
   std::sort(hits.begin(), hits.end());

@@ -248,4 +248,17 @@ void MeshState::reverse_faces(const std::vector<uint32_t> &faces) {
   }
 }
 
+std::vector<uint32_t> MeshState::faces_across() const {
+  std::vector<uint32_t> across(3 * faces_.size(), kNone);
+  for (uint32_t f = 0; f < faces_.size(); ++f) {
+    if (!alive_[f]) continue;
+    const Tri &t = faces_[f].corners;
+    for (int i = 0; i < 3; ++i) {
+      uint32_t fs[2];
+      if (edge_faces(t[i], t[(i + 1) % 3], fs) == 2) across[3 * f + i] = fs[0] == f ? fs[1] : fs[0];
+    }
+  }
+  return across;
+}
+
 }  // namespace moa

@@ -113,6 +113,9 @@ class MeshState {
 
   // Faces on edge uv: 0, 1 or 2 of them, oldest first, written to out.
   int edge_faces(uint32_t u, uint32_t v, uint32_t out[2]) const;
+  // The face across each edge of each live face, 3 per face (edge i from corner i of the
+  // stored order); kNone on an open edge and for removed faces.
+  std::vector<uint32_t> faces_across() const;
   // The live face with these three corners, in any order, or kNone.
   uint32_t face_with(const Tri &t) const {
     uint32_t fs[2];

@@ -59,21 +59,11 @@ struct OpenEdge {
 class FaceCut {
  public:
   explicit FaceCut(const MeshState &mesh)
-      : across_(3 * mesh.face_count(), kNone),
+      // The face across each edge, looked up once: the searches cross every edge many times.
+      : across_(mesh.faces_across()),
         mark_(mesh.face_count(), 0),
         sink_(mesh.face_count(), 0),
-        from_(mesh.face_count(), kNone) {
-    // The face across each edge, looked up once: the searches cross every edge many times.
-    for (uint32_t f = 0; f < mesh.face_count(); ++f) {
-      if (!mesh.alive(f)) continue;
-      const Tri &t = mesh.stored(f);
-      for (int i = 0; i < 3; ++i) {
-        uint32_t fs[2];
-        if (mesh.edge_faces(t[i], t[(i + 1) % 3], fs) == 2)
-          across_[3 * f + i] = fs[0] == f ? fs[1] : fs[0];
-      }
-    }
-  }
+        from_(mesh.face_count(), kNone) {}
 
   // Takes face f out of the graph.
   void remove(uint32_t f) {

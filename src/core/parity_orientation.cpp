@@ -98,17 +98,7 @@ std::size_t turn_regions_against_ray_parity(GrowthState &g) {
   g.crossings.add_all(mesh);  // every face committed for the rays
   const std::vector<int8_t> votes = parity_votes(g);
 
-  // The face across each edge of each live face.
-  std::vector<uint32_t> across(3 * std::size_t(count), kNone);
-  for (uint32_t f = 0; f < count; ++f) {
-    if (!mesh.alive(f)) continue;
-    const Tri &t = mesh.stored(f);
-    for (int i = 0; i < 3; ++i) {
-      uint32_t fs[2];
-      if (mesh.edge_faces(t[i], t[(i + 1) % 3], fs) == 2)
-        across[3 * f + i] = fs[0] == f ? fs[1] : fs[0];
-    }
-  }
+  const std::vector<uint32_t> across = mesh.faces_across();
   std::vector<int32_t> score(votes.begin(), votes.end()), next(count);
   for (int round = 0; round < kSmoothingRounds; ++round) {
     for (uint32_t f = 0; f < count; ++f) {
