@@ -205,8 +205,9 @@ std::size_t turn_regions_against_ray_parity(GrowthState &g) {
     mesh.remove(f);
     ++g.stats.triangles_removed;
   }
+  // The crossing index needs no rebuild: its queries skip removed faces, and a turned face
+  // keeps its corners and its place in the records the scene reads.
   mesh.reverse_faces(turn);
-  g.crossings.add_all(mesh);
   return turned;
 }
 
