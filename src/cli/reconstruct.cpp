@@ -44,7 +44,7 @@ namespace {
 volatile std::sig_atomic_t g_interrupted = 0;
 extern "C" void on_interrupt(int) { g_interrupted = 1; }
 
-struct Options {
+struct ReconstructArgs {
   std::string input, output, stats, render;
   std::vector<std::pair<std::string, std::string>> params;  // as given: name, value text
   bool ascii = false;
@@ -71,8 +71,8 @@ bool find_param(const std::string &name, moa_param_info &info) {
   return false;
 }
 
-Options parse(int argc, char **argv) {
-  Options o;
+ReconstructArgs parse_reconstruct_args(int argc, char **argv) {
+  ReconstructArgs o;
   ArgWalker args(argc, argv, "reconstruct");
   while (args.next()) {
     if (args.positional()) {
@@ -106,7 +106,7 @@ Options parse(int argc, char **argv) {
   return o;
 }
 
-void set_params(moa_ctx *ctx, const Options &o) {
+void set_params(moa_ctx *ctx, const ReconstructArgs &o) {
   for (const auto &[name, text] : o.params) {
     moa_param_info info;
     if (!find_param(name, info))
@@ -150,7 +150,7 @@ extern "C" int on_progress(moa_stage stage, double fraction, void *user) {
   return 0;
 }
 
-void write_stats(const Options &o, const moa_ctx *ctx, const moa_stats &s, size_t points,
+void write_stats(const ReconstructArgs &o, const moa_ctx *ctx, const moa_stats &s, size_t points,
                  double read_ms, double run_ms, double write_ms) {
   JsonWriter j;
   j.begin_object();
@@ -207,7 +207,7 @@ std::string counted(size_t n, const char *one, const char *many) {
   return std::to_string(n) + " " + (n == 1 ? one : many);
 }
 
-void print_summary(const Options &o, const moa_stats &s, size_t points, double run_ms) {
+void print_summary(const ReconstructArgs &o, const moa_stats &s, size_t points, double run_ms) {
   std::printf("%s: %s -> %s, %s (%s), %zu of %zu points used; reconstruction %.1f ms (",
               o.input.c_str(), counted(points, "point", "points").c_str(),
               counted(s.triangles, "triangle", "triangles").c_str(),
@@ -223,7 +223,7 @@ void print_summary(const Options &o, const moa_stats &s, size_t points, double r
 }  // namespace
 
 int run_reconstruct(int argc, char **argv) {
-  const Options o = parse(argc, argv);
+  const ReconstructArgs o = parse_reconstruct_args(argc, argv);
   if (o.help) {
     std::fputs(kReconstructHelp, stdout);
     return kExitOk;

@@ -34,7 +34,7 @@ const char *const kRenderHelp =
 
 namespace {
 
-struct Options {
+struct RenderArgs {
   std::string mesh, image;
   render::Options render;
   bool highlight = false;
@@ -42,8 +42,8 @@ struct Options {
   bool help = false;
 };
 
-Options parse(int argc, char **argv) {
-  Options o;
+RenderArgs parse_render_args(int argc, char **argv) {
+  RenderArgs o;
   ArgWalker args(argc, argv, "render");
   while (args.next()) {
     if (args.positional()) {
@@ -124,7 +124,7 @@ double render_result(const std::string &image_path, const io::MeshData &mesh) {
 }
 
 int run_render(int argc, char **argv) {
-  const Options o = parse(argc, argv);
+  const RenderArgs o = parse_render_args(argc, argv);
   if (o.help) {
     std::fputs(kRenderHelp, stdout);
     return kExitOk;

@@ -38,7 +38,7 @@ constexpr double kTangledVertices = 0.5;
 
 // A region of a piece that fills a volume (clutter attached to a scanned surface, which makes
 // one piece with it): hot vertices, where over kHotShare of the used points among the vertex
-// and its kRegionNeighbors nearest carry faces in several fans, joined through those
+// and its kHotNeighbors nearest carry faces in several fans, joined through those
 // neighbour lists, kTangledRegion or more of them. In a volume about two thirds of the
 // vertices are pinched (see kTangledVertices): the clutter attached to a unit sphere of 10,000
 // to 40,000 points makes one region of 1,972 to 24,966 vertices (3,000 to 34,000 random
@@ -47,7 +47,7 @@ constexpr double kTangledVertices = 0.5;
 // and homer, and of 0.5 % on 300,000); at a share of one half, one on bunny's 300,000 passed
 // 2,000. The loop module spent about 1.5 ms per clutter point on fills that the next round
 // took apart again.
-constexpr unsigned kRegionNeighbors = 20;
+constexpr unsigned kHotNeighbors = 20;
 constexpr double kHotShare = 0.6;
 constexpr uint32_t kTangledRegion = 1000;
 
@@ -58,7 +58,7 @@ bool pinched(const MeshState &mesh, uint32_t v) { return mesh.fan_count(v) >= 2;
 // the neighbours of those. Returns whether there is one.
 bool mark_tangled_regions(const GrowthState &g, std::vector<uint8_t> &tangled) {
   const uint32_t n = uint32_t(g.points.size());
-  const unsigned k = std::min(kRegionNeighbors, g.nb.k);
+  const unsigned k = std::min(kHotNeighbors, g.nb.k);
   std::vector<uint8_t> hot(n, 0);
   for (uint32_t v = 0; v < n; ++v) {
     if (!g.mesh.is_used(v) || tangled[v]) continue;

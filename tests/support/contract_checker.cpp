@@ -53,8 +53,6 @@ std::string face_text(std::size_t f, const std::uint32_t *t) {
   return s.str();
 }
 
-Vec3 point(const double *xyz, std::uint32_t i) { return {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]}; }
-
 struct HalfEdge {
   std::uint32_t lo, hi, face;
   bool forward;  // the face walks lo -> hi

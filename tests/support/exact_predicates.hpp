@@ -3,12 +3,19 @@
 // Independent of the library's own predicates on purpose: the checker judges the library.
 #pragma once
 
+#include <cstdint>
+
 namespace moa::test {
 
 struct Vec3 {
   double x, y, z;
   double operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
 };
+
+// Point i of a flat x y z array.
+inline Vec3 point(const double *xyz, std::uint32_t i) {
+  return {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
+}
 
 // Sign of det[a-d; b-d; c-d]: +1, 0 or -1 (exact).
 int orient3d(const Vec3 &a, const Vec3 &b, const Vec3 &c, const Vec3 &d);

@@ -43,8 +43,6 @@ std::size_t entry_count(const Grid &g, const std::vector<Box> &boxes,
   return total;
 }
 
-Vec3 point(const double *xyz, std::uint32_t i) { return {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]}; }
-
 // Exact narrow phase for one pair; returns true on a conflict and the number of shared indices.
 bool judge_pair(const double *xyz, const std::uint32_t *t, const std::uint32_t *u, int &shared) {
   int ti[3], ui[3];  // positions of shared indices in t and u
