@@ -14,6 +14,7 @@ if (($# < 1)); then
   exit 2
 fi
 build=$(realpath -m "$1")
+mkdir -p "$(dirname "$build")"  # for the configure log beside it
 seconds=${2:-30}
 shift $(($# >= 2 ? 2 : 1))
 targets=("$@")
@@ -31,7 +32,7 @@ flags="-O1 -gline-tables-only"
 cmake -S "$source_dir" -B "$build" -DCMAKE_BUILD_TYPE=None \
   -DCMAKE_C_COMPILER=clang-14 -DCMAKE_CXX_COMPILER=clang++-14 \
   -DCMAKE_C_FLAGS="$flags" -DCMAKE_CXX_FLAGS="$flags" \
-  -DMOA_SANITIZE=ON -DMOA_FUZZ=ON -DMOA_BUILD_TESTS=ON \
+  -DMOA_SANITIZE=ON -DMOA_FUZZ=ON -DMOA_BUILD_TESTS=ON -DCMAKE_UNITY_BUILD=ON \
   -DMOA_BUILD_CLI=OFF -DMOA_BUILD_BINDINGS=OFF -DMOA_BUILD_BENCH=OFF > "$build.configure.log" \
   || { cat "$build.configure.log"; exit 1; }
 cmake --build "$build" -j"$(nproc)" --target "${targets[@]/#/fuzz_}"

@@ -13,6 +13,7 @@ if (($# != 1)); then
   exit 2
 fi
 build=$(realpath -m "$1")
+mkdir -p "$(dirname "$build")"  # for the configure log beside it
 
 # GCC's TSan, like the rest of the suite. -O1: TSan is slow enough without -O0.
 flags="-fsanitize=thread -g -O1"
@@ -20,6 +21,7 @@ cmake -S "$source_dir" -B "$build" -DCMAKE_BUILD_TYPE=None \
   -DCMAKE_C_FLAGS="$flags" -DCMAKE_CXX_FLAGS="$flags" \
   -DCMAKE_EXE_LINKER_FLAGS=-fsanitize=thread -DCMAKE_SHARED_LINKER_FLAGS=-fsanitize=thread \
   -DMOA_BUILD_TESTS=ON -DMOA_BUILD_CLI=OFF -DMOA_BUILD_BINDINGS=OFF -DMOA_BUILD_BENCH=OFF \
+  -DCMAKE_UNITY_BUILD=ON \
   > "$build.configure.log" || { cat "$build.configure.log"; exit 1; }
 cmake --build "$build" -j"$(nproc)" --target robust_threads
 
