@@ -15,5 +15,6 @@ class UsageError : public std::runtime_error {
 
 int sample_main(int argc, char **argv);  // sample_inputs.cpp: generate the inputs
 int report_main(int argc, char **argv);  // report.cpp: results -> Markdown
+int scan_main(int argc, char **argv);    // range_scan.cpp: a range scan of a mesh
 
 }  // namespace moa::bench

@@ -6,6 +6,7 @@
 //   moa_bench analyze MESH [--points INPUT] [--reference REF] [--result FILE]
 //   moa_bench sample --out DIR [--meshes DIR]           (sample_inputs.cpp)
 //   moa_bench report --work DIR --out FILE.md [...]     (report.cpp)
+//   moa_bench scan MESH --out FILE [...]                (range_scan.cpp)
 //
 // One input per process, so the peak resident set read at the end of the first run is that
 // run's own (plus reading the file, which is reported separately). The mesh is checked by the
@@ -46,7 +47,12 @@ const char *const kUsage =
     "  moa_bench sample --out DIR [--meshes DIR]\n"
     "      write the benchmark inputs and DIR/inputs.tsv (deterministic)\n"
     "  moa_bench report --work DIR --out FILE.md [--command TEXT]\n"
-    "      turn the results of run_bench.sh into a Markdown report\n";
+    "      turn the results of run_bench.sh into a Markdown report\n"
+    "  moa_bench scan MESH --out FILE [--views N] [--resolution N] [--elevation RAD] [--above]\n"
+    "                 [--noise F] [--registration F] [--seed N]\n"
+    "      a range scan of MESH: N cameras (3) round its +y axis at RAD (0.3) alternately\n"
+    "      below and above it (--above: all above), each an N x N grid of rays (300); range\n"
+    "      noise and a per-camera offset as shares of the diagonal (0); the points to FILE\n";
 
 // The moa_quality report as q_* keys: the contract C1-C5, topology and angles.
 void put_quality(ResultWriter &r, const MeshReport &q) {
@@ -297,6 +303,7 @@ int main(int argc, char **argv) {
     if (mode == "sample") return sample_main(argc - 1, argv + 1);
     if (mode == "report") return report_main(argc - 1, argv + 1);
     if (mode == "analyze") return analyze_main(argc - 1, argv + 1);
+    if (mode == "scan") return scan_main(argc - 1, argv + 1);
     return run_main(argc, argv);
   } catch (const UsageError &e) {
     std::fprintf(stderr, "moa_bench: %s\n%s", e.what(), kUsage);
