@@ -40,6 +40,9 @@ constexpr std::size_t kMaxLinedNeighbors = 96;
 // (a half: more boundary edges on the stacks tried; all of the list: more again).
 constexpr unsigned kAcrossInList = 4;
 constexpr std::size_t kDeepAcrossQuery = 384;
+// A point on a line in a cloud that is not lined as a whole is in a lined region when at least
+// this share of its neighbours lie on lines too (widen_lined_regions).
+constexpr double kLinedRegionShare = 0.5;
 static_assert(kMaxLinedNeighbors < 256, "a rank must fit the byte knn_pass keeps it in");
 
 // Thin walls (a plate, a pipe two or three spacings thick): the far sheet fills a quarter of
@@ -208,13 +211,13 @@ void knn_pass(const KdIndex &index, Neighborhood &nb, std::vector<uint8_t> &acro
   }
 }
 
-// The points of a lined cloud whose list holds no neighbour across: the last part of the list
-// goes to the nearest points across (kAcrossInList), and the spacing spans the gap to them.
-void reach_across(const KdIndex &index, Neighborhood &nb, const std::vector<float> &across_gap) {
+// Points on lines whose lists hold no neighbour across (`short_of_across`): the last part of
+// each list goes to the nearest points across (kAcrossInList), and the spacing spans the gap
+// to them. With `lined_around`, only where the nearest point across is marked in it.
+void reach_across(const KdIndex &index, Neighborhood &nb,
+                  const std::vector<uint32_t> &short_of_across,
+                  const std::vector<uint8_t> *lined_around = nullptr) {
   const std::vector<Vec3> &p = index.points();
-  std::vector<uint32_t> short_of_across;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (across_gap[i] == 0) short_of_across.push_back(uint32_t(i));
   const unsigned most = std::max(1u, nb.k / kAcrossInList);
   const std::size_t want = std::min(kDeepAcrossQuery + 1, p.size());
   tbb::parallel_for(
@@ -235,12 +238,50 @@ void reach_across(const KdIndex &index, Neighborhood &nb, const std::vector<floa
             across.push_back(j);
             if (across.size() == most) break;
           }
+          if (lined_around && !across.empty() && !(*lined_around)[across[0]]) continue;
           // All of them lie beyond the list: in place of its farthest, it stays nearest first.
           std::copy(across.begin(), across.end(), list + (nb.k - across.size()));
           if (!across.empty())
             nb.spacing[i] = std::max(nb.spacing[i], float(kAcrossShare * std::sqrt(gap2)));
         }
       });
+}
+
+// Lined regions of a cloud that is not lined as a whole: where a range scan met a face at a
+// grazing angle, its rows of points lie several spacings apart there and nowhere else, and a
+// spacing measured along them keeps the segments' spheres from reaching the next row (the
+// top of fandisk scanned from three views at 17 degrees: 1,119 boundary edges and 3,412
+// points left out). A point on a line at least kLinedRegionShare of whose neighbours lie on
+// lines too is treated there as in a lined cloud, where the nearest point across is in such a
+// neighbourhood as well: its spacing spans the gap across, and a list that holds no point
+// across reaches over to the nearest ones. Points that line up by chance in an even sample
+// (about 3 %) have few such neighbours; a row of points standing off a surface (a wire) has
+// none across.
+void widen_lined_regions(const KdIndex &index, Neighborhood &nb,
+                         const std::vector<uint8_t> &across_rank,
+                         const std::vector<float> &across_gap) {
+  const std::size_t n = index.points().size();
+  std::vector<uint8_t> on(n), among(n);
+  for (std::size_t i = 0; i < n; ++i) on[i] = on_a_line(nb.spacing[i], across_gap[i]);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096),
+                    [&](const tbb::blocked_range<std::size_t> &r) {
+                      for (std::size_t i = r.begin(); i != r.end(); ++i) {
+                        const uint32_t *list = nb.of(uint32_t(i));
+                        unsigned lined = 0;
+                        for (unsigned j = 0; j < nb.k; ++j) lined += on[list[j]];
+                        among[i] = double(lined) >= kLinedRegionShare * double(nb.k);
+                      }
+                    });
+  std::vector<uint32_t> short_of_across;
+  for (uint32_t i = 0; i < n; ++i) {
+    if (!on[i] || !among[i]) continue;
+    if (across_gap[i] == 0) {
+      short_of_across.push_back(i);
+    } else if (among[nb.of(i)[across_rank[i]]]) {
+      nb.spacing[i] = std::max(nb.spacing[i], float(kAcrossShare * across_gap[i]));
+    }
+  }
+  reach_across(index, nb, short_of_across, &among);
 }
 
 }  // namespace
@@ -264,6 +305,7 @@ Neighborhood compute_neighbors(const KdIndex &index, unsigned k,
       nb.k = longer;
       knn_pass(index, nb, across_rank, across_gap, [&](double) { tick(1.0); });
     }
+    widen_lined_regions(index, nb, across_rank, across_gap);
     return nb;
   }
   nb.lined = true;
@@ -278,9 +320,12 @@ Neighborhood compute_neighbors(const KdIndex &index, unsigned k,
       knn_pass(index, nb, across_rank, across_gap, [&](double) { tick(1.0); });
     }
   }
-  for (std::size_t i = 0; i < n; ++i)
+  std::vector<uint32_t> short_of_across;
+  for (std::size_t i = 0; i < n; ++i) {
     nb.spacing[i] = std::max(nb.spacing[i], float(kAcrossShare * across_gap[i]));
-  reach_across(index, nb, across_gap);
+    if (across_gap[i] == 0) short_of_across.push_back(uint32_t(i));
+  }
+  reach_across(index, nb, short_of_across);
   return nb;
 }
 

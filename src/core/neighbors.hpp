@@ -26,8 +26,9 @@ struct Neighborhood {
                                   // or of thin walls
   std::vector<uint32_t> knn;      // k per point, nearest first, the point itself excluded
   std::vector<float> spacing;     // mean distance to the nearest few neighbours (work units); in
-                                  // a cloud sampled along lines, at least most of the gap to the
-                                  // nearest neighbour off the point's line
+                                  // a cloud sampled along lines, or a region of one that is (a
+                                  // face a range scan met at a grazing angle), at least most of
+                                  // the gap to the nearest neighbour off the point's line
   bool thin_walls = false;        // the cloud's walls are two or three spacings thick: local
                                   // planes look past the far sheet (local_plane)
   bool lined = false;             // the cloud is sampled along lines (kLinedShare)

@@ -610,6 +610,50 @@ Points cylinder_contour_stack(std::size_t slices, double per_gap, std::uint64_t 
   return circle_stack(slices, per_gap, seed, [](double) { return 1.0; });
 }
 
+Points scanned_box(double hx, double hy, double hz, int views, int resolution, double elevation) {
+  const double half[3] = {hx, hy, hz};
+  const double reach = 4 * std::sqrt(hx * hx + hy * hy + hz * hz);
+  // The rays of a view fan out over a little more than the box's bounding sphere (whose
+  // radius is a quarter of the distance to it).
+  const double fan = 0.3;
+  Points p;
+  for (int v = 0; v < views; ++v) {
+    const double azimuth = 2 * k_pi * v / views + 0.3;
+    const double el = v % 2 ? elevation : -elevation;
+    const double back[3] = {std::cos(el) * std::cos(azimuth), std::sin(el),
+                            std::cos(el) * std::sin(azimuth)};
+    const double eye[3] = {reach * back[0], reach * back[1], reach * back[2]};
+    // right = forward x up, up' = right x forward, with forward = -back and up = +y.
+    double right[3] = {back[2], 0, -back[0]};
+    const double rn = std::sqrt(right[0] * right[0] + right[2] * right[2]);
+    right[0] /= rn;
+    right[2] /= rn;
+    const double up[3] = {right[2] * back[1], right[0] * back[2] - right[2] * back[0],
+                          -right[0] * back[1]};
+    for (int i = 0; i < resolution; ++i)
+      for (int j = 0; j < resolution; ++j) {
+        const double x = (2 * (i + 0.5) / resolution - 1) * fan;
+        const double y = (2 * (j + 0.5) / resolution - 1) * fan;
+        double d[3];
+        for (int a = 0; a < 3; ++a) d[a] = -back[a] + x * right[a] + y * up[a];
+        // Slab test: the ray enters the box at the largest of the per-axis entry distances.
+        double enter = -HUGE_VAL, leave = HUGE_VAL;
+        for (int a = 0; a < 3; ++a) {
+          if (d[a] == 0) {
+            if (std::fabs(eye[a]) > half[a]) enter = HUGE_VAL;
+            continue;
+          }
+          const double t1 = (-half[a] - eye[a]) / d[a], t2 = (half[a] - eye[a]) / d[a];
+          enter = std::max(enter, std::min(t1, t2));
+          leave = std::min(leave, std::max(t1, t2));
+        }
+        if (!(enter <= leave) || enter <= 0) continue;
+        push(p, eye[0] + enter * d[0], eye[1] + enter * d[1], eye[2] + enter * d[2]);
+      }
+  }
+  return p;
+}
+
 Points thin_points(const Points &candidates, double min_distance) {
   // Hash grid with cells of min_distance: a conflicting point lies in one of the 27 cells around.
   auto cell = [&](double x) { return static_cast<std::int64_t>(std::floor(x / min_distance)); };

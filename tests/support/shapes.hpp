@@ -109,6 +109,12 @@ Points cylinder_contour_stack(std::size_t slices, double per_gap, std::uint64_t 
 // changes sign. With n[2] below n[0] and n[1], slices lie farther apart than the voxels in
 // them, as in most CT scans.
 Points marching_cubes_vertices(double (*f)(double x, double y, double z), const int n[3]);
+// A range scan of the box [-hx, hx] x [-hy, hy] x [-hz, hz]: `views` cameras round the y axis,
+// 4 half-diagonals away, at `elevation` radians alternately below and above the box, each
+// casting a resolution x resolution grid of rays and keeping the first hit. A face that only a
+// camera at a grazing angle sees is sampled in rows 1 / sin(angle) times farther apart than
+// the points along them.
+Points scanned_box(double hx, double hy, double hz, int views, int resolution, double elevation);
 // Greedy blue-noise thinning: keeps candidates (in order) at least min_distance from all kept.
 Points thin_points(const Points &candidates, double min_distance);
 
