@@ -129,6 +129,8 @@ int scan_main(int argc, char **argv) {
     diagonal += (hi[a] - lo[a]) * (hi[a] - lo[a]);
   }
   diagonal = std::sqrt(diagonal);
+  if (!(diagonal > 0) || !std::isfinite(diagonal))
+    throw std::runtime_error(o.mesh + ": the mesh has no extent to scan");
 
   // Embree in single precision, centred on the mesh (the hits are computed back in double).
   std::vector<float> xyz(3 * vertices + 1);  // Embree reads 16 bytes at the last vertex
